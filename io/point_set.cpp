@@ -1,0 +1,107 @@
+#include "point_set.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "error.h"
+
+namespace delpsc::io {
+
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "the binary point format is little-endian; add byte swapping for this platform");
+
+bool has_suffix(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void require_finite(const WeightedPoint& p, const std::string& path, const std::string& where) {
+  const double v[4] = {p.x, p.y, p.z, p.w};
+  static const char* names[4] = {"x", "y", "z", "w"};
+  for (int k = 0; k < 4; ++k)
+    if (!std::isfinite(v[k]))
+      throw Error(path + ": " + where + ": " + names[k] + " is not a finite number");
+}
+
+std::vector<WeightedPoint> read_binary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw Error(path + ": cannot open for reading");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw Error(path + ": cannot determine the file size");
+  if (size % 32 != 0)
+    throw Error(path + ": size " + std::to_string(size) +
+                " bytes is not a multiple of 32 (records of four doubles x y z w)");
+  in.seekg(0);
+  std::vector<WeightedPoint> points(static_cast<std::size_t>(size / 32));
+  if (!points.empty() &&
+      !in.read(reinterpret_cast<char*>(points.data()), static_cast<std::streamsize>(size)))
+    throw Error(path + ": read failed");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    require_finite(points[i], path, "record " + std::to_string(i) + " (byte " +
+                                        std::to_string(i * 32) + ")");
+  return points;
+}
+
+std::vector<WeightedPoint> read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot open for reading");
+  std::vector<WeightedPoint> points;
+  std::string line;
+  std::size_t line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream fields(line);
+    double v[5];
+    int n = 0;
+    std::string token;
+    while (fields >> token) {
+      if (n == 4) throw Error(path + ": line " + std::to_string(line_no) +
+                              ": more than four numbers (expected x y z [w])");
+      char* end = nullptr;
+      v[n] = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0')
+        throw Error(path + ": line " + std::to_string(line_no) + ": '" + token +
+                    "' is not a number");
+      ++n;
+    }
+    if (n < 3)
+      throw Error(path + ": line " + std::to_string(line_no) +
+                  ": expected x y z [w], found " + std::to_string(n) + " number(s)");
+    WeightedPoint p{v[0], v[1], v[2], n == 4 ? v[3] : 0.0};
+    require_finite(p, path, "line " + std::to_string(line_no));
+    points.push_back(p);
+  }
+  if (in.bad()) throw Error(path + ": read failed");
+  return points;
+}
+
+}  // namespace
+
+std::vector<WeightedPoint> read_point_set(const std::string& path) {
+  return has_suffix(path, ".bin") ? read_binary(path) : read_text(path);
+}
+
+void write_point_set(const std::string& path, const std::vector<WeightedPoint>& points) {
+  if (has_suffix(path, ".bin")) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw Error(path + ": cannot open for writing");
+    out.write(reinterpret_cast<const char*>(points.data()),
+              static_cast<std::streamsize>(points.size() * sizeof(WeightedPoint)));
+    if (!out) throw Error(path + ": write failed");
+    return;
+  }
+  std::ofstream out(path);
+  if (!out) throw Error(path + ": cannot open for writing");
+  out.precision(17);
+  for (const auto& p : points) out << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.w << '\n';
+  if (!out) throw Error(path + ": write failed");
+}
+
+}  // namespace delpsc::io

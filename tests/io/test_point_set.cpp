@@ -1,0 +1,72 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+#include <delpsc/io/error.h>
+#include <delpsc/io/point_set.h>
+#include <fstream>
+#include <limits>
+#include <string>
+
+using namespace delpsc;
+
+namespace {
+std::string temp_path(const std::string& name) {
+  return std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp") + "/delpsc_" +
+         std::to_string(::getpid()) + "_" + name;
+}
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+std::string error_of(const std::string& path) {
+  try {
+    io::read_point_set(path);
+  } catch (const io::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("point sets round-trip exactly through both formats") {
+  const std::vector<WeightedPoint> pts = {{0.1, -2.5e-300, 3e200, 0}, {1.0 / 3, 2, 3, 0.25}};
+  for (const char* name : {"a.bin", "a.txt"}) {
+    const std::string path = temp_path(name);
+    io::write_point_set(path, pts);
+    CHECK(io::read_point_set(path) == pts);
+    std::remove(path.c_str());
+  }
+}
+
+TEST_CASE("text point sets: optional weight, comments, blank lines") {
+  const std::string path = temp_path("b.txt");
+  write_file(path, "# header\n1 2 3\n\n  4 5 6 0.5\n");
+  const auto pts = io::read_point_set(path);
+  REQUIRE(pts.size() == 2);
+  CHECK(pts[0] == WeightedPoint{1, 2, 3, 0});
+  CHECK(pts[1] == WeightedPoint{4, 5, 6, 0.5});
+  std::remove(path.c_str());
+}
+
+TEST_CASE("bad point files get errors naming the file and the place") {
+  const std::string path = temp_path("c.txt");
+  CHECK(error_of(temp_path("missing.txt")).find("cannot open") != std::string::npos);
+  write_file(path, "1 2 3\n1 2\n");
+  CHECK(error_of(path).find("line 2") != std::string::npos);
+  write_file(path, "1 2 three\n");
+  CHECK(error_of(path).find("'three' is not a number") != std::string::npos);
+  write_file(path, "1 2 nan\n");
+  CHECK(error_of(path).find("not a finite number") != std::string::npos);
+  write_file(path, "1 2 3 4 5\n");
+  CHECK(error_of(path).find("more than four") != std::string::npos);
+  const std::string bin = temp_path("d.bin");
+  write_file(bin, std::string(33, '\0'));
+  CHECK(error_of(bin).find("not a multiple of 32") != std::string::npos);
+  const double rec[4] = {0, std::numeric_limits<double>::infinity(), 0, 0};
+  write_file(bin, std::string(reinterpret_cast<const char*>(rec), 32));
+  CHECK(error_of(bin).find("record 0") != std::string::npos);
+  std::remove(path.c_str());
+  std::remove(bin.c_str());
+}
