@@ -1,0 +1,20 @@
+// A polygon model as read from a file: vertices and triangles, nothing more. Readers produce it
+// (polygons fan-triangulated, exactly duplicated vertices merged); protect::build_complex turns
+// it into the piecewise smooth complex.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <delpsc/kernel/point.h>
+
+namespace delpsc::io {
+
+struct TriangleSoup {
+  std::vector<Vec3> vertices;
+  /// Vertex indices, counter-clockwise seen from the side the file calls outside.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+}  // namespace delpsc::io
