@@ -1,0 +1,48 @@
+// What every subcommand of the delpsc program shares: how it registers, how it reports, and what
+// its exit codes mean.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace delpsc::app {
+
+/// Exit codes: 0 success; 1 the job ran but a check it was asked for failed, or an internal
+/// error; 2 bad input or bad usage (unreadable file, malformed model, impossible parameters).
+enum ExitCode : int { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
+
+/// Options every subcommand understands.
+struct GlobalOptions {
+  bool quiet = false;    ///< -q: only the key=value report and errors
+  int verbosity = 0;     ///< -v (repeatable): more detail on stderr
+};
+
+/// Thrown inside a subcommand to end it with a message on stderr and an exit code.
+struct Failure {
+  ExitCode code;
+  std::string message;
+};
+
+/// Prints one "key=value" line of the final report on stdout.
+inline void report(const char* key, const std::string& value) {
+  std::printf("%s=%s\n", key, value.c_str());
+}
+inline void report(const char* key, double value) {
+  std::printf("%s=%.6g\n", key, value);
+}
+inline void report(const char* key, long long value) { std::printf("%s=%lld\n", key, value); }
+inline void report(const char* key, std::size_t value) {
+  std::printf("%s=%zu\n", key, value);
+}
+inline void report(const char* key, bool value) { std::printf("%s=%s\n", key, value ? "true" : "false"); }
+
+/// A subcommand registers its options on `app` and returns the function that runs it.
+using Runner = std::function<int(const GlobalOptions&)>;
+
+// One registration function per subcommand, each in its own cmd_*.cpp.
+Runner register_triangulate(CLI::App& app);
+
+}  // namespace delpsc::app
