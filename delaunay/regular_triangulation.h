@@ -42,8 +42,8 @@
 // WeightedPoint (32 bytes), one incident cell, one status byte, and, once some point is hidden,
 // a link in its cell's list of hidden points.
 //
-// Not thread-safe: one triangulation per thread (const queries may run concurrently when no
-// thread modifies it).
+// Not thread-safe: one triangulation per thread. Const queries share nothing mutable except
+// is_valid(), so they may run concurrently when no thread modifies the triangulation.
 #pragma once
 
 #include <array>
@@ -265,9 +265,29 @@ class RegularTriangulation {
   };
   struct Scratch;  // working arrays reused across operations (no per-insertion allocation)
 
-  int pending_dimension() const;
-  // Implementation helpers are declared in regular_triangulation.cpp's friend struct.
-  friend struct TriangulationOps;
+  int pending_dimension() const { return basis_size_ - 1; }
+  PointId append_point(const WeightedPoint& p);
+  bool extends_basis(PointId id) const;
+  void add_pending(PointId id, ChangeSet* changes);
+  void remove_pending(PointId id);
+  void build_first_tetrahedron(PointId a, PointId b, PointId c, PointId d);
+  void insert_in_3d(PointId id, CellId hint, ChangeSet* changes);
+  CellId valid_start(CellId hint) const;
+  CellId walk(const double* p, CellId start) const;
+  bool in_conflict(CellId c, const double* p, PointId replaced) const;
+  void find_conflicts(CellId start, const double* p, PointId replaced);
+  void star_cavity(PointId id, ChangeSet* changes);
+  void attach_hidden(PointId id, CellId c);
+  void detach_hidden(PointId id);
+  void enable_hidden_storage();
+  CellId new_cell();
+  void free_cell(CellId c);
+  void collect_star(PointId v, std::vector<CellId>& star);
+  bool remove_vertex(PointId v, ChangeSet* changes, std::string* error);
+  void fill_hole_from_link(PointId v);
+  bool fill_flat_hole(PointId v, std::string* error);
+  void finish_removal(PointId v, ChangeSet* changes);
+  Scratch& scratch() const;
 
   std::vector<WeightedPoint> points_;   // by PointId
   std::vector<CellId> point_cell_;      // vertex: an incident cell; hidden: its cell; else kNoCell
@@ -286,7 +306,8 @@ class RegularTriangulation {
   std::vector<PointId> pending_;        // points waiting for dimension 3, in arrival order
   std::array<PointId, 3> basis_{};      // affinely independent pending points (pending_dimension+1)
   int basis_size_ = 0;
-  std::unique_ptr<Scratch> scratch_;
+  bool hidden_storage_ = false;         // hidden_next_ / cell_hidden_ allocated
+  mutable std::unique_ptr<Scratch> scratch_;
 };
 
 }  // namespace delpsc::delaunay

@@ -1,0 +1,897 @@
+// Incremental regular triangulation: insertion, location, hidden points, removal.
+// The design and the literature are in regular_triangulation.h; this file says why each step is
+// done the way it is.
+#include "regular_triangulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include <delpsc/kernel/predicates.h>
+
+#include "small_map.h"
+#include "spatial_sort.h"
+#include "tetrahedron_tables.h"
+
+namespace delpsc::delaunay {
+
+namespace kn = delpsc::kernel;
+using namespace detail;
+
+namespace {
+
+constexpr std::uint8_t kInConflict = 1;     // cell mark: in the conflict region
+constexpr std::uint8_t kNotInConflict = 2;  // cell mark: tested, not in conflict
+constexpr std::uint8_t kOnBoundary = 1;     // point mark: vertex of a cavity boundary facet
+constexpr std::uint8_t kInterior = 2;       // point mark: vertex inside the cavity
+
+bool same_position(const double* a, const double* b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+}  // namespace
+
+/// Working memory of the operations, kept between calls so that an insertion allocates nothing
+/// once the vectors have grown to the largest cavity seen.
+struct RegularTriangulation::Scratch {
+  std::vector<std::uint8_t> cell_mark;   // by CellId; all zero between operations
+  std::vector<std::uint8_t> point_mark;  // by PointId; all zero between operations
+  std::vector<CellId> conflict;          // conflict region, in discovery order
+  std::vector<CellId> rejected;          // neighbours tested and found not in conflict
+  std::vector<Facet> boundary;           // cavity boundary, as facets of conflict cells
+  std::vector<CellId> created;           // cells made by the current operation
+  std::vector<PointId> interior;         // vertices made redundant by the current insertion
+  std::vector<PointId> relocate;         // hidden points whose cell was destroyed
+  SmallMap edges;                        // cavity boundary edge -> new cell facet
+
+  // Removal.
+  std::vector<CellId> star;           // cells incident to the removed vertex
+  std::vector<PointId> link_points;   // link vertex number (in `link`) -> PointId
+  SmallMap local_of;                  // PointId -> link vertex number
+  SmallMap facet_map;                 // oriented facet of `link` -> link cell facet
+  SmallMap outer_of;                  // hole boundary facet of `link` -> outside facet here
+  SmallMap new_of_star;               // flat removal: star cell -> its replacement
+  std::vector<CellId> hole;           // cells of `link` inside the hole
+  std::vector<CellId> new_of;         // cell of `link` -> new cell here
+  std::vector<PointId> reinsert;      // hidden points of the star, inserted again
+  std::unique_ptr<RegularTriangulation> link;  // regular triangulation of the link vertices
+};
+
+RegularTriangulation::Scratch& RegularTriangulation::scratch() const {
+  if (!scratch_) scratch_ = std::make_unique<Scratch>();
+  return *scratch_;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Life cycle
+// ---------------------------------------------------------------------------------------------
+
+RegularTriangulation::RegularTriangulation() = default;
+RegularTriangulation::~RegularTriangulation() = default;
+RegularTriangulation::RegularTriangulation(RegularTriangulation&&) noexcept = default;
+RegularTriangulation& RegularTriangulation::operator=(RegularTriangulation&&) noexcept = default;
+
+RegularTriangulation::RegularTriangulation(const RegularTriangulation& o)
+    : points_(o.points_),
+      point_cell_(o.point_cell_),
+      status_(o.status_),
+      hidden_next_(o.hidden_next_),
+      cell_hidden_(o.cell_hidden_),
+      cells_(o.cells_),
+      free_head_(o.free_head_),
+      free_count_(o.free_count_),
+      infinite_cell_(o.infinite_cell_),
+      last_cell_(o.last_cell_),
+      vertex_count_(o.vertex_count_),
+      hidden_count_(o.hidden_count_),
+      infinite_cell_count_(o.infinite_cell_count_),
+      weighted_(o.weighted_),
+      pending_(o.pending_),
+      basis_(o.basis_),
+      basis_size_(o.basis_size_),
+      hidden_storage_(o.hidden_storage_) {}
+
+RegularTriangulation& RegularTriangulation::operator=(const RegularTriangulation& o) {
+  if (this != &o) *this = RegularTriangulation(o);
+  return *this;
+}
+
+void RegularTriangulation::clear() {
+  points_.clear();
+  point_cell_.clear();
+  status_.clear();
+  hidden_next_.clear();
+  cell_hidden_.clear();
+  cells_.clear();
+  free_head_ = kNoCell;
+  free_count_ = 0;
+  infinite_cell_ = kNoCell;
+  last_cell_ = kNoCell;
+  vertex_count_ = 0;
+  hidden_count_ = 0;
+  infinite_cell_count_ = 0;
+  weighted_ = false;
+  pending_.clear();
+  basis_size_ = 0;
+  hidden_storage_ = false;
+  if (scratch_) {
+    scratch_->cell_mark.clear();
+    scratch_->point_mark.clear();
+  }
+}
+
+void RegularTriangulation::reserve(std::size_t points) {
+  points_.reserve(points);
+  point_cell_.reserve(points);
+  status_.reserve(points);
+  // A Delaunay triangulation of n uniform points has about 6.7 n cells.
+  const std::size_t cells = points + points / 10 * 68 / 10 + 64;
+  cells_.reserve(cells);
+  scratch().cell_mark.reserve(cells);
+}
+
+std::size_t RegularTriangulation::memory_bytes() const {
+  std::size_t bytes = sizeof(*this);
+  bytes += points_.capacity() * sizeof(WeightedPoint) + point_cell_.capacity() * sizeof(CellId) +
+           status_.capacity() * sizeof(PointStatus) + hidden_next_.capacity() * sizeof(PointId) +
+           cell_hidden_.capacity() * sizeof(PointId) + cells_.capacity() * sizeof(Cell) +
+           pending_.capacity() * sizeof(PointId);
+  if (scratch_) {
+    const Scratch& s = *scratch_;
+    bytes += sizeof(Scratch) + s.cell_mark.capacity() + s.point_mark.capacity() +
+             (s.conflict.capacity() + s.rejected.capacity() + s.created.capacity() +
+              s.star.capacity() + s.hole.capacity() + s.new_of.capacity()) * sizeof(CellId) +
+             s.boundary.capacity() * sizeof(Facet) +
+             (s.interior.capacity() + s.relocate.capacity() + s.link_points.capacity() +
+              s.reinsert.capacity()) * sizeof(PointId) +
+             s.edges.memory_bytes() + s.local_of.memory_bytes() + s.facet_map.memory_bytes() +
+             s.outer_of.memory_bytes() + s.new_of_star.memory_bytes();
+    if (s.link) bytes += s.link->memory_bytes();
+  }
+  return bytes;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Cells, points, hidden lists
+// ---------------------------------------------------------------------------------------------
+
+CellId RegularTriangulation::new_cell() {
+  if (free_head_ != kNoCell) {
+    const CellId c = free_head_;
+    free_head_ = cells_[c].n[0];
+    --free_count_;
+    return c;
+  }
+  // Neighbour links keep the cell id in 30 bits.
+  if (cells_.size() >= (std::size_t{1} << 30))
+    throw std::length_error("RegularTriangulation: more than 2^30 cells");
+  cells_.push_back(Cell{});
+  if (hidden_storage_) cell_hidden_.push_back(kNoPoint);
+  return static_cast<CellId>(cells_.size() - 1);
+}
+
+void RegularTriangulation::free_cell(CellId c) {
+  cells_[c].v[0] = kDeadCell;
+  cells_[c].n[0] = free_head_;
+  free_head_ = c;
+  ++free_count_;
+}
+
+PointId RegularTriangulation::append_point(const WeightedPoint& p) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
+    throw std::invalid_argument("RegularTriangulation::insert: non-finite coordinate or weight");
+  if (points_.size() >= kNoPoint)
+    throw std::length_error("RegularTriangulation: too many points for 32-bit ids");
+  const auto id = static_cast<PointId>(points_.size());
+  points_.push_back(p);
+  point_cell_.push_back(kNoCell);
+  status_.push_back(PointStatus::pending);
+  if (hidden_storage_) hidden_next_.push_back(kNoPoint);
+  weighted_ = weighted_ || p.w != 0;
+  return id;
+}
+
+// Hidden points are rare for unweighted inputs (only exact duplicates), so their per-cell list
+// heads cost nothing until the first one appears.
+void RegularTriangulation::enable_hidden_storage() {
+  if (hidden_storage_) return;
+  hidden_storage_ = true;
+  hidden_next_.assign(points_.size(), kNoPoint);
+  cell_hidden_.assign(cells_.size(), kNoPoint);
+}
+
+void RegularTriangulation::attach_hidden(PointId id, CellId c) {
+  enable_hidden_storage();
+  if (status_[id] != PointStatus::hidden) {
+    status_[id] = PointStatus::hidden;
+    ++hidden_count_;
+  }
+  point_cell_[id] = c;
+  hidden_next_[id] = cell_hidden_[c];
+  cell_hidden_[c] = id;
+}
+
+void RegularTriangulation::detach_hidden(PointId id) {
+  const CellId c = point_cell_[id];
+  PointId* link = &cell_hidden_[c];
+  while (*link != id) link = &hidden_next_[*link];
+  *link = hidden_next_[id];
+  hidden_next_[id] = kNoPoint;
+  point_cell_[id] = kNoCell;
+  --hidden_count_;
+}
+
+void RegularTriangulation::hidden_points(CellId c, std::vector<PointId>& out) const {
+  if (!hidden_storage_) return;
+  for (PointId h = cell_hidden_[c]; h != kNoPoint; h = hidden_next_[h]) out.push_back(h);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pending points (dimension < 3)
+// ---------------------------------------------------------------------------------------------
+
+// True when `id` raises the affine dimension of the basis (for a full basis of three: when it is
+// not coplanar with them, i.e. four affinely independent points are now known).
+bool RegularTriangulation::extends_basis(PointId id) const {
+  const double* p = points_[id].data();
+  switch (basis_size_) {
+    case 0:
+      return true;
+    case 1:
+      return !same_position(points_[basis_[0]].data(), p);
+    case 2:
+      return !kn::collinear(points_[basis_[0]].data(), points_[basis_[1]].data(), p);
+    default:
+      return kn::orient3d(points_[basis_[0]].data(), points_[basis_[1]].data(),
+                          points_[basis_[2]].data(), p) != 0;
+  }
+}
+
+void RegularTriangulation::add_pending(PointId id, ChangeSet* changes) {
+  status_[id] = PointStatus::pending;
+  pending_.push_back(id);
+  if (!extends_basis(id)) return;
+  if (basis_size_ < 3) {
+    basis_[basis_size_++] = id;
+    return;
+  }
+  // Four affinely independent points: build the first tetrahedron, then insert the others in
+  // their order of arrival (any order gives the same triangulation).
+  std::vector<PointId> waiting;
+  waiting.swap(pending_);
+  basis_size_ = 0;
+  build_first_tetrahedron(basis_[0], basis_[1], basis_[2], id);
+  for (const PointId q : waiting)
+    if (status_[q] == PointStatus::pending) insert_in_3d(q, kNoCell, nullptr);
+  if (changes) {
+    for (CellId c = 0; c < cells_.size(); ++c)
+      if (is_cell_alive(c)) changes->created.push_back(c);
+    for (const PointId q : waiting)
+      if (status_[q] == PointStatus::hidden) changes->hidden.push_back(q);
+  }
+}
+
+void RegularTriangulation::remove_pending(PointId id) {
+  pending_.erase(std::find(pending_.begin(), pending_.end(), id));
+  status_[id] = PointStatus::removed;
+  // The basis may have lost a point: rebuild it from what remains (it cannot reach four).
+  basis_size_ = 0;
+  for (const PointId q : pending_)
+    if (basis_size_ < 3 && extends_basis(q)) basis_[basis_size_++] = q;
+}
+
+void RegularTriangulation::build_first_tetrahedron(PointId a, PointId b, PointId c, PointId d) {
+  if (kn::orient3d(points_[a].data(), points_[b].data(), points_[c].data(), points_[d].data()) < 0)
+    std::swap(c, d);
+  CellId ids[5];
+  for (CellId& id : ids) id = new_cell();
+  cells_[ids[0]].v = {a, b, c, d};
+  // The infinite cell across facet i: the finite facet with its orientation reversed (two
+  // vertices swapped), so that replacing the infinite vertex by a point outside gives a positive
+  // orientation.
+  for (int i = 0; i < 4; ++i) {
+    auto v = cells_[ids[0]].v;
+    v[i] = kInfiniteVertex;
+    std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
+    cells_[ids[1 + i]].v = v;
+  }
+  // Five cells: match their twenty facets by vertex sets.
+  for (int x = 0; x < 5; ++x)
+    for (int i = 0; i < 4; ++i)
+      for (int y = 0; y < 5; ++y) {
+        if (y == x) continue;
+        const auto& cx = cells_[ids[x]].v;
+        const auto& cy = cells_[ids[y]].v;
+        for (int j = 0; j < 4; ++j) {
+          int shared = 0;
+          for (int k = 0; k < 4; ++k)
+            if (k != i)
+              for (int l = 0; l < 4; ++l)
+                if (l != j && cx[k] == cy[l]) ++shared;
+          if (shared == 3) cells_[ids[x]].n[i] = make_link(ids[y], j);
+        }
+      }
+  for (const PointId p : {a, b, c, d}) {
+    status_[p] = PointStatus::vertex;
+    point_cell_[p] = ids[0];
+  }
+  vertex_count_ = 4;
+  infinite_cell_ = ids[1];
+  infinite_cell_count_ = 4;
+  last_cell_ = ids[0];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Insertion
+// ---------------------------------------------------------------------------------------------
+
+PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes, CellId hint) {
+  if (changes) changes->clear();
+  const PointId id = append_point(p);
+  if (dimension() < 3)
+    add_pending(id, changes);
+  else
+    insert_in_3d(id, hint, changes);
+  return id;
+}
+
+PointId RegularTriangulation::insert(std::span<const WeightedPoint> points) {
+  const auto first = static_cast<PointId>(points_.size());
+  reserve(points_.size() + points.size());
+  for (const WeightedPoint& p : points) append_point(p);
+  std::vector<std::uint32_t> order;
+  brio_order(points, order);
+  for (const std::uint32_t k : order) {
+    const PointId id = first + k;
+    if (dimension() < 3)
+      add_pending(id, nullptr);
+    else
+      insert_in_3d(id, kNoCell, nullptr);
+  }
+  return first;
+}
+
+CellId RegularTriangulation::valid_start(CellId hint) const {
+  if (hint < cells_.size() && is_cell_alive(hint)) return hint;
+  if (last_cell_ < cells_.size() && is_cell_alive(last_cell_)) return last_cell_;
+  return infinite_cell_;
+}
+
+// Remembering stochastic visibility walk (Devillers, Pion & Teillaud 2002): leave the cell
+// through a facet that has p strictly on its other side, never back through the facet we came
+// in by, trying the facets from a random first one. The randomness matters: in a regular (not
+// Delaunay) triangulation the deterministic visibility walk can cycle. Only orient3d decides, so
+// the result is exact: a finite cell whose closure contains p, or an infinite cell whose finite
+// facet p sees strictly from outside.
+CellId RegularTriangulation::walk(const double* p, CellId c) const {
+  CellId previous = kNoCell;
+  std::uint32_t random = 0x9e3779b9u ^ c;
+  for (;;) {
+    const Cell& cell = cells_[c];
+    const double* q[4];
+    int infinite = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (cell.v[k] == kInfiniteVertex) {
+        infinite = k;
+        q[k] = p;
+      } else {
+        q[k] = points_[cell.v[k]].data();
+      }
+    }
+    if (infinite >= 0) {
+      // We only enter an infinite cell when p is strictly beyond its finite facet; a start
+      // there may not be, then step into the hull.
+      if (kn::orient3d(q[0], q[1], q[2], q[3]) > 0) return c;
+      previous = c;
+      c = cell.n[infinite] >> 2;
+      continue;
+    }
+    random ^= random << 13;
+    random ^= random >> 17;
+    random ^= random << 5;
+    const int first = static_cast<int>(random & 3u);
+    CellId next = kNoCell;
+    for (int t = 0; t < 4; ++t) {
+      const int i = (first + t) & 3;
+      const CellId neighbour = cell.n[i] >> 2;
+      if (neighbour == previous) continue;
+      const double* saved = q[i];
+      q[i] = p;
+      const int o = kn::orient3d(q[0], q[1], q[2], q[3]);
+      q[i] = saved;
+      if (o < 0) {
+        next = neighbour;
+        break;
+      }
+    }
+    if (next == kNoCell) return c;
+    previous = c;
+    c = next;
+  }
+}
+
+CellId RegularTriangulation::locate(const Vec3& p, CellId hint) const {
+  if (dimension() < 3) return kNoCell;
+  return walk(p.data(), valid_start(hint));
+}
+
+// The conflict test of CGAL's Regular_triangulation_3::side_of_power_sphere(c, p, perturb=true):
+// for a finite cell the perturbed power test; for an infinite cell, p must lie strictly outside
+// its hull facet, or in the facet's plane and in conflict with the facet's power circle
+// (perturbed). `replaced` is a vertex at p's position that p outweighs: every cell incident to it
+// is in conflict (the power product of p with their orthosphere is w_replaced - w_p < 0), and
+// the perturbed test does not apply to coincident points.
+bool RegularTriangulation::in_conflict(CellId c, const double* p, PointId replaced) const {
+  const Cell& cell = cells_[c];
+  const double* q[4];
+  int infinite = -1;
+  for (int k = 0; k < 4; ++k) {
+    const PointId v = cell.v[k];
+    if (v == replaced) return true;
+    if (v == kInfiniteVertex) {
+      infinite = k;
+      q[k] = p;
+    } else {
+      q[k] = points_[v].data();
+    }
+  }
+  if (infinite < 0)
+    return (weighted_ ? kn::power_test_perturbed(q[0], q[1], q[2], q[3], p)
+                      : kn::insphere_perturbed(q[0], q[1], q[2], q[3], p)) > 0;
+  const int o = kn::orient3d(q[0], q[1], q[2], q[3]);
+  if (o != 0) return o > 0;
+  const int* f = kFacetSlots[infinite];
+  return kn::power_circle_side_perturbed(q[f[0]], q[f[1]], q[f[2]], p) > 0;
+}
+
+void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* changes) {
+  const double* p = points_[id].data();
+  const CellId c = walk(p, valid_start(hint));
+  last_cell_ = c;
+  PointId replaced = kNoPoint;
+  if (!is_infinite(c)) {
+    // p in the closed cell c: if it sits on a vertex, that vertex is one of c's.
+    for (const PointId u : cells_[c].v) {
+      if (!same_position(points_[u].data(), p)) continue;
+      // Two weighted points at one position: the heavier one wins; on a tie the vertex stays.
+      if (kn::power_test(points_[u].data(), p) > 0) {
+        replaced = u;
+        break;
+      }
+      attach_hidden(id, c);
+      if (changes) changes->hidden.push_back(id);
+      return;
+    }
+  }
+  // The regular triangulation gains p as a vertex iff p conflicts with the cell containing it;
+  // otherwise p is redundant: its lifted point lies above the lower hull.
+  if (replaced == kNoPoint && !in_conflict(c, p, kNoPoint)) {
+    attach_hidden(id, c);
+    if (changes) changes->hidden.push_back(id);
+    return;
+  }
+  find_conflicts(c, p, replaced);
+  star_cavity(id, changes);
+}
+
+// Breadth-first search of the conflict region from a cell in conflict. The region is connected
+// (its union is star-shaped from p: it is exactly the union of the cells that will be incident to
+// p), so the search finds all of it; every facet between a conflict cell and a non-conflict cell
+// is a boundary facet of the cavity. Non-conflict cells are marked too, so that each is tested once.
+void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId replaced) {
+  Scratch& s = scratch();
+  if (s.cell_mark.size() < cells_.size()) s.cell_mark.resize(cells_.size(), 0);
+  std::uint8_t* mark = s.cell_mark.data();
+  s.conflict.clear();
+  s.rejected.clear();
+  s.boundary.clear();
+  mark[start] = kInConflict;
+  s.conflict.push_back(start);
+  for (std::size_t k = 0; k < s.conflict.size(); ++k) {
+    const CellId x = s.conflict[k];
+    for (int i = 0; i < 4; ++i) {
+      const CellId y = cells_[x].n[i] >> 2;
+      const std::uint8_t m = mark[y];
+      if (m == kInConflict) continue;
+      if (m == 0) {
+        if (in_conflict(y, p, replaced)) {
+          mark[y] = kInConflict;
+          s.conflict.push_back(y);
+          continue;
+        }
+        mark[y] = kNotInConflict;
+        s.rejected.push_back(y);
+      }
+      s.boundary.push_back({x, i});
+    }
+  }
+}
+
+// Bowyer–Watson step: replace the conflict region by the cells joining p to its boundary facets.
+// A new cell keeps the boundary facet's conflict cell's vertex order with p in the slot of the
+// vertex opposite the facet (p sees the facet from the same side), so it is positively oriented
+// and its facet index toward the outside is unchanged. The new cells are glued to each other
+// along the boundary edges: the new facet through p and boundary edge (a, b), oriented as seen
+// from its cell, reads (p, a, b) in one cell and (p, b, a) in the other, so a hash of directed
+// edges pairs them in one pass.
+void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
+  Scratch& s = scratch();
+
+  // Vertices all of whose cells are in conflict (none on the cavity boundary) become redundant.
+  // Only weights can cause that (unweighted points are never redundant, duplicates aside), so
+  // unweighted inputs skip the marking.
+  s.interior.clear();
+  if (weighted_) {
+    if (s.point_mark.size() < points_.size()) s.point_mark.resize(points_.size(), 0);
+    std::uint8_t* mark = s.point_mark.data();
+    for (const Facet& f : s.boundary)
+      for (const int k : kFacetSlots[f.index]) {
+        const PointId v = cells_[f.cell].v[k];
+        if (v != kInfiniteVertex) mark[v] = kOnBoundary;
+      }
+    for (const CellId x : s.conflict)
+      for (const PointId v : cells_[x].v)
+        if (v != kInfiniteVertex && mark[v] == 0) {
+          mark[v] = kInterior;
+          s.interior.push_back(v);
+        }
+    for (const Facet& f : s.boundary)
+      for (const int k : kFacetSlots[f.index]) {
+        const PointId v = cells_[f.cell].v[k];
+        if (v != kInfiniteVertex) mark[v] = 0;
+      }
+    for (const PointId v : s.interior) mark[v] = 0;
+  }
+
+  // Hidden points of the doomed cells, taken before their slots are recycled.
+  s.relocate.clear();
+  if (hidden_storage_)
+    for (const CellId x : s.conflict) {
+      for (PointId h = cell_hidden_[x]; h != kNoPoint; h = hidden_next_[h]) s.relocate.push_back(h);
+      cell_hidden_[x] = kNoPoint;
+    }
+
+  // The star of p.
+  s.created.clear();
+  s.edges.reset(2 * s.boundary.size() + 8);
+  for (const Facet& f : s.boundary) {
+    const Cell old = cells_[f.cell];
+    const int i = f.index;
+    const CellId n = new_cell();
+    Cell& cell = cells_[n];
+    cell.v = old.v;
+    cell.v[i] = id;
+    cell.n[i] = old.n[i];
+    cells_[old.n[i] >> 2].n[old.n[i] & 3u] = make_link(n, i);
+    for (int j = 0; j < 4; ++j) {
+      if (j == i) continue;
+      const PointId a = cell.v[kEdgeAfterApex[i][j][0]];
+      const PointId b = cell.v[kEdgeAfterApex[i][j][1]];
+      if (const std::uint32_t* other = s.edges.find(edge_key(b, a))) {
+        cell.n[j] = *other;
+        cells_[*other >> 2].n[*other & 3u] = make_link(n, j);
+      } else {
+        s.edges.insert(edge_key(a, b), make_link(n, j));
+      }
+    }
+    for (const PointId v : cell.v) {
+      if (v == kInfiniteVertex) {
+        infinite_cell_ = n;
+        ++infinite_cell_count_;
+      } else {
+        point_cell_[v] = n;
+      }
+    }
+    s.created.push_back(n);
+  }
+
+  std::uint8_t* mark = s.cell_mark.data();
+  for (const CellId x : s.conflict) {
+    if (is_infinite(x)) --infinite_cell_count_;
+    free_cell(x);
+    mark[x] = 0;
+  }
+  for (const CellId x : s.rejected) mark[x] = 0;
+
+  status_[id] = PointStatus::vertex;
+  ++vertex_count_;
+  last_cell_ = s.created.front();
+
+  // Redundant vertices join the hidden points. Every displaced hidden point stays hidden (adding
+  // a point only makes more points redundant) and lies in the union of the new cells, so a walk
+  // from one of them finds its new cell.
+  for (const PointId v : s.interior) {
+    --vertex_count_;
+    status_[v] = PointStatus::pending;  // attach_hidden counts it as newly hidden
+    s.relocate.push_back(v);
+  }
+  for (const PointId h : s.relocate) attach_hidden(h, walk(points_[h].data(), last_cell_));
+
+  if (changes) {
+    changes->created.insert(changes->created.end(), s.created.begin(), s.created.end());
+    changes->destroyed.insert(changes->destroyed.end(), s.conflict.begin(), s.conflict.end());
+    changes->hidden.insert(changes->hidden.end(), s.interior.begin(), s.interior.end());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Removal
+// ---------------------------------------------------------------------------------------------
+
+bool RegularTriangulation::remove(PointId id, ChangeSet* changes, std::string* error) {
+  if (changes) changes->clear();
+  if (id >= points_.size()) {
+    if (error) *error = "remove: no point with id " + std::to_string(id);
+    return false;
+  }
+  switch (status_[id]) {
+    case PointStatus::removed:
+      if (error) *error = "remove: point " + std::to_string(id) + " was already removed";
+      return false;
+    case PointStatus::pending:
+      remove_pending(id);
+      return true;
+    case PointStatus::hidden:
+      detach_hidden(id);
+      status_[id] = PointStatus::removed;
+      return true;
+    case PointStatus::vertex:
+      break;
+  }
+  return remove_vertex(id, changes, error);
+}
+
+void RegularTriangulation::collect_star(PointId v, std::vector<CellId>& star) {
+  Scratch& s = scratch();
+  if (s.cell_mark.size() < cells_.size()) s.cell_mark.resize(cells_.size(), 0);
+  std::uint8_t* mark = s.cell_mark.data();
+  star.clear();
+  const CellId first = incident_cell(v);
+  mark[first] = kInConflict;
+  star.push_back(first);
+  for (std::size_t k = 0; k < star.size(); ++k) {
+    const Cell& cell = cells_[star[k]];
+    for (int i = 0; i < 4; ++i) {
+      if (cell.v[i] == v) continue;  // the facet opposite v does not contain v
+      const CellId y = cell.n[i] >> 2;
+      if (mark[y]) continue;
+      mark[y] = kInConflict;
+      star.push_back(y);
+    }
+  }
+  for (const CellId c : star) mark[c] = 0;
+}
+
+bool RegularTriangulation::remove_vertex(PointId v, ChangeSet* changes, std::string* error) {
+  if (vertex_count_ <= 4) {
+    if (error)
+      *error = "remove: vertex " + std::to_string(v) +
+               " is one of the last four vertices; the triangulation would drop below dimension 3";
+    return false;
+  }
+  Scratch& s = scratch();
+  collect_star(v, s.star);
+
+  // The link vertices, numbered in order of discovery.
+  s.link_points.clear();
+  s.local_of.reset(64);
+  for (const CellId c : s.star)
+    for (const PointId w : cells_[c].v)
+      if (w != v && w != kInfiniteVertex && !s.local_of.find(w)) {
+        s.local_of.insert(w, static_cast<std::uint32_t>(s.link_points.size()));
+        s.link_points.push_back(w);
+      }
+  if (!s.link) s.link = std::make_unique<RegularTriangulation>();
+  RegularTriangulation& link = *s.link;
+  link.clear();
+  for (const PointId w : s.link_points) link.insert(points_[w]);
+
+  // The link spans 3D unless v is a hull vertex whose neighbours are all coplanar.
+  if (link.dimension() < 3) {
+    if (!fill_flat_hole(v, error)) return false;
+  } else {
+    if (link.number_of_vertices() != s.link_points.size())
+      throw std::logic_error("RegularTriangulation::remove: a link vertex is redundant in its link");
+    fill_hole_from_link(v);
+  }
+  finish_removal(v, changes);
+  return true;
+}
+
+// The cells of the regular triangulation of the remaining points that lie in the hole are the
+// cells of the regular triangulation of the link vertices that lie in the hole (Devillers 2002;
+// CGAL's Triangulation_3::remove_3D): they are regular for the link vertices, and the triangulation
+// is unique under the perturbation. Each hole boundary facet, oriented as seen from v, is a facet
+// of the link triangulation seen from a cell on v's side; those cells and everything reachable
+// from them without crossing a boundary facet are copied into the hole.
+void RegularTriangulation::fill_hole_from_link(PointId v) {
+  Scratch& s = scratch();
+  const RegularTriangulation& link = *s.link;
+  constexpr std::uint32_t kLocalInfinite = kFacetKeyMask;
+  if (s.link_points.size() >= kLocalInfinite)
+    throw std::length_error("RegularTriangulation::remove: vertex degree too large");
+  auto local = [&](PointId w) -> std::uint32_t {
+    return w == kInfiniteVertex ? kLocalInfinite : *s.local_of.find(w);
+  };
+
+  s.facet_map.reset(4 * link.number_of_cells());
+  for (CellId t = 0; t < link.cell_capacity(); ++t) {
+    if (!link.is_cell_alive(t)) continue;
+    const auto& tv = link.cells_[t].v;
+    auto lid = [&](int k) { return tv[k] == kInfiniteVertex ? kLocalInfinite : tv[k]; };
+    for (int f = 0; f < 4; ++f) {
+      const int* fs = kFacetSlots[f];
+      s.facet_map.insert(facet_key(lid(fs[0]), lid(fs[1]), lid(fs[2])), make_link(t, f));
+    }
+  }
+
+  s.outer_of.reset(s.star.size());
+  s.hole.clear();
+  s.new_of.assign(link.cell_capacity(), kNoCell);
+  constexpr CellId kReached = kNoCell - 1;
+  for (const CellId x : s.star) {
+    const Cell& cell = cells_[x];
+    const int k = index_of(x, v);
+    const int* fs = kFacetSlots[k];
+    const std::uint32_t* t = s.facet_map.find(
+        facet_key(local(cell.v[fs[0]]), local(cell.v[fs[1]]), local(cell.v[fs[2]])));
+    if (!t)
+      throw std::logic_error("RegularTriangulation::remove: a hole facet is missing from the link");
+    s.outer_of.insert(*t, cell.n[k]);
+    if (s.new_of[*t >> 2] == kNoCell) {
+      s.new_of[*t >> 2] = kReached;
+      s.hole.push_back(*t >> 2);
+    }
+  }
+  for (std::size_t k = 0; k < s.hole.size(); ++k) {
+    const CellId t = s.hole[k];
+    for (int f = 0; f < 4; ++f) {
+      if (s.outer_of.find(make_link(t, f))) continue;
+      const CellId u = link.neighbour(t, f);
+      if (s.new_of[u] == kNoCell) {
+        s.new_of[u] = kReached;
+        s.hole.push_back(u);
+      }
+    }
+  }
+
+  for (const CellId t : s.hole) s.new_of[t] = new_cell();
+  s.created.clear();
+  for (const CellId t : s.hole) {
+    const CellId n = s.new_of[t];
+    Cell& cell = cells_[n];
+    for (int k = 0; k < 4; ++k) {
+      const PointId lv = link.vertex(t, k);
+      cell.v[k] = lv == kInfiniteVertex ? kInfiniteVertex : s.link_points[lv];
+    }
+    for (int f = 0; f < 4; ++f) {
+      if (const std::uint32_t* outer = s.outer_of.find(make_link(t, f))) {
+        cell.n[f] = *outer;
+        cells_[*outer >> 2].n[*outer & 3u] = make_link(n, f);
+      } else {
+        cell.n[f] = make_link(s.new_of[link.neighbour(t, f)], link.mirror_index(t, f));
+      }
+    }
+    s.created.push_back(n);
+  }
+}
+
+// v is a hull vertex whose finite neighbours are coplanar: its star is a cone from v over a flat
+// region R of their plane, plus infinite cells. Without v, R becomes part of the hull: each finite
+// star cell is replaced by the infinite cell on its base facet (v's slot given to the infinite
+// vertex keeps the orientation convention, since v lay outside the new hull). If the far side of
+// R is not triangulated, every remaining vertex is in that plane: refuse.
+bool RegularTriangulation::fill_flat_hole(PointId v, std::string* error) {
+  Scratch& s = scratch();
+  for (const CellId x : s.star) {
+    if (is_infinite(x)) continue;
+    if (is_infinite(neighbour(x, index_of(x, v)))) {
+      if (error)
+        *error = "remove: removing vertex " + std::to_string(v) +
+                 " would leave only coplanar vertices (dimension < 3)";
+      return false;
+    }
+  }
+  s.new_of_star.reset(s.star.size());
+  s.created.clear();
+  for (const CellId x : s.star)
+    if (!is_infinite(x)) {
+      const CellId n = new_cell();
+      s.new_of_star.insert(x, n);
+      s.created.push_back(n);
+    }
+  for (const CellId x : s.star) {
+    if (is_infinite(x)) continue;
+    const CellId n = *s.new_of_star.find(x);
+    const Cell old = cells_[x];
+    const int k = index_of(x, v);
+    Cell& cell = cells_[n];
+    cell.v = old.v;
+    cell.v[k] = kInfiniteVertex;
+    cell.n[k] = old.n[k];
+    cells_[old.n[k] >> 2].n[old.n[k] & 3u] = make_link(n, k);
+    for (int j = 0; j < 4; ++j) {
+      if (j == k) continue;
+      const CellId y = old.n[j] >> 2;
+      if (const std::uint32_t* ny = s.new_of_star.find(y)) {
+        cell.n[j] = make_link(*ny, static_cast<int>(old.n[j] & 3u));
+      } else {
+        // y = (inf, v, edge): the new cell meets the infinite cell beyond y's facet opposite v.
+        const std::uint32_t outer = cells_[y].n[index_of(y, v)];
+        cell.n[j] = outer;
+        cells_[outer >> 2].n[outer & 3u] = make_link(n, j);
+      }
+    }
+  }
+  return true;
+}
+
+// Common end of a vertex removal: retire the star, register the new cells, forget v, and insert
+// again the points the star's cells were hiding (CGAL's Regular_triangulation_3::remove does the
+// same): each comes back as a vertex or is hidden again where it now lies. Points hidden in other
+// cells stay hidden: those cells survive, and so does the reason they were not in conflict.
+void RegularTriangulation::finish_removal(PointId v, ChangeSet* changes) {
+  Scratch& s = scratch();
+  s.reinsert.clear();
+  for (const CellId x : s.star) {
+    if (hidden_storage_) {
+      for (PointId h = cell_hidden_[x]; h != kNoPoint; h = hidden_next_[h]) s.reinsert.push_back(h);
+      cell_hidden_[x] = kNoPoint;
+    }
+    if (is_infinite(x)) --infinite_cell_count_;
+    free_cell(x);
+  }
+  for (const CellId n : s.created)
+    for (const PointId w : cells_[n].v) {
+      if (w == kInfiniteVertex) {
+        infinite_cell_ = n;
+        ++infinite_cell_count_;
+      } else {
+        point_cell_[w] = n;
+      }
+    }
+  status_[v] = PointStatus::removed;
+  point_cell_[v] = kNoCell;
+  --vertex_count_;
+  last_cell_ = s.created.front();
+  if (changes) {
+    changes->destroyed.assign(s.star.begin(), s.star.end());
+    changes->created.assign(s.created.begin(), s.created.end());
+  }
+  if (s.reinsert.empty()) return;
+
+  // Re-insertions may destroy cells this removal just made; the report must be net. (Insertion
+  // does not touch s.reinsert.)
+  ChangeSet step;
+  for (const PointId h : s.reinsert) {
+    hidden_next_[h] = kNoPoint;
+    status_[h] = PointStatus::pending;
+    --hidden_count_;
+    insert_in_3d(h, last_cell_, changes ? &step : nullptr);
+    if (!changes) continue;
+    for (const CellId d : step.destroyed) {
+      auto it = std::find(changes->created.begin(), changes->created.end(), d);
+      if (it != changes->created.end()) {
+        *it = changes->created.back();
+        changes->created.pop_back();
+      } else {
+        changes->destroyed.push_back(d);
+      }
+    }
+    changes->created.insert(changes->created.end(), step.created.begin(), step.created.end());
+    for (const PointId q : step.hidden) {
+      auto it = std::find(changes->revealed.begin(), changes->revealed.end(), q);
+      if (it != changes->revealed.end()) {
+        *it = changes->revealed.back();
+        changes->revealed.pop_back();
+      } else if (q != h) {
+        changes->hidden.push_back(q);
+      }
+    }
+    if (status_[h] == PointStatus::vertex) changes->revealed.push_back(h);
+    step.clear();
+  }
+}
+
+}  // namespace delpsc::delaunay

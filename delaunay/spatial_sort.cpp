@@ -1,0 +1,126 @@
+// BRIO rounds + Hilbert order; see spatial_sort.h.
+#include "spatial_sort.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace delpsc::delaunay {
+namespace {
+
+/// Position along the Hilbert curve of the grid cell (x[0], x[1], x[2]), each < 2^bits.
+/// Skilling's method: turn the axes into the "transposed" Hilbert index by undoing the curve's
+/// rotations and reflections level by level, Gray-encode, then interleave the bits (most
+/// significant level first).
+std::uint64_t hilbert_key(std::array<std::uint32_t, 3> x, int bits) {
+  const std::uint32_t top = 1u << (bits - 1);
+  for (std::uint32_t q = top; q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (x[i] & q) {
+        x[0] ^= p;  // invert the low bits of x0
+      } else {      // exchange the low bits of x0 and xi
+        const std::uint32_t t = (x[0] ^ x[i]) & p;
+        x[0] ^= t;
+        x[i] ^= t;
+      }
+    }
+  }
+  x[1] ^= x[0];
+  x[2] ^= x[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = top; q > 1; q >>= 1)
+    if (x[2] & q) t ^= q - 1;
+  for (auto& xi : x) xi ^= t;
+
+  std::uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
+  return key;
+}
+
+/// LSD radix sort of (key, index) pairs on the low `key_bits` bits of the key, 8 bits a pass.
+void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items, int key_bits,
+                std::vector<std::pair<std::uint64_t, std::uint32_t>>& tmp) {
+  tmp.resize(items.size());
+  for (int shift = 0; shift < key_bits; shift += 8) {
+    std::array<std::size_t, 257> count{};
+    for (const auto& it : items) ++count[((it.first >> shift) & 0xFFu) + 1];
+    for (int b = 0; b < 256; ++b) count[b + 1] += count[b];
+    for (const auto& it : items) tmp[count[(it.first >> shift) & 0xFFu]++] = it;
+    items.swap(tmp);
+  }
+}
+
+/// splitmix64: a tiny, well-mixed deterministic generator for the shuffle.
+std::uint64_t next_random(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+void hilbert_sort(std::span<const WeightedPoint> points, std::span<std::uint32_t> indices, int bits) {
+  if (indices.size() < 2) return;
+  bits = std::clamp(bits, 1, 21);
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::numeric_limits<double>::infinity();
+    hi[k] = -lo[k];
+  }
+  for (const std::uint32_t i : indices) {
+    const double* p = points[i].data();
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  // One scale for all axes keeps the curve's cells cubes (a flat set stays well ordered).
+  const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const double cells = std::ldexp(1.0, bits);
+  const double scale = extent > 0 ? cells / extent : 0;
+  const auto max_cell = static_cast<std::uint32_t>(cells - 1);
+
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> items(indices.size()), tmp;
+  for (std::size_t j = 0; j < indices.size(); ++j) {
+    const double* p = points[indices[j]].data();
+    std::array<std::uint32_t, 3> cell;
+    for (int k = 0; k < 3; ++k) {
+      const double c = (p[k] - lo[k]) * scale;  // in [0, 2^bits]; clamp the top edge
+      cell[k] = std::min(static_cast<std::uint32_t>(c), max_cell);
+    }
+    items[j] = {hilbert_key(cell, bits), indices[j]};
+  }
+  radix_sort(items, 3 * bits, tmp);
+  for (std::size_t j = 0; j < indices.size(); ++j) indices[j] = items[j].second;
+}
+
+void brio_order(std::span<const WeightedPoint> points, std::vector<std::uint32_t>& order,
+                std::uint64_t seed, std::size_t small_round) {
+  const std::size_t n = points.size();
+  order.resize(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+  // Fisher–Yates shuffle: each round is then a random sample of the batch.
+  std::uint64_t state = seed;
+  for (std::size_t i = n; i > 1; --i) {
+    const std::size_t j = next_random(state) % i;
+    std::swap(order[i - 1], order[j]);
+  }
+  // Rounds [b_k, b_{k-1}) with b_0 = n, b_k = b_{k-1} / 8, down to small_round points.
+  std::size_t end = n;
+  while (end > 0) {
+    std::size_t begin = end / 8;
+    if (begin < small_round) begin = 0;
+    // A grid fine enough for the round: about one point per cell, at least 2^4 per axis.
+    int bits = 4;
+    while (bits < 21 && (std::size_t{1} << (3 * bits)) < 8 * (end - begin)) ++bits;
+    hilbert_sort(points, std::span<std::uint32_t>(order.data() + begin, end - begin), bits);
+    end = begin;
+  }
+}
+
+}  // namespace delpsc::delaunay
