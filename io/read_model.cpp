@@ -1,0 +1,76 @@
+#include "read_model.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "error.h"
+#include "model_parsers.h"
+
+namespace delpsc::io {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return ext;
+}
+
+/// The whole file in memory: every parser then works on one contiguous buffer, and the binary
+/// ones can check counts against the exact size before allocating.
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a model file");
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
+  std::string bytes;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<std::size_t>(size));
+  char chunk[1 << 16];
+  for (;;) {  // chunked, so pipes and files that change size are read correctly too
+    const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get());
+    bytes.append(chunk, n);
+    if (n < sizeof chunk) break;
+  }
+  if (std::ferror(f.get())) throw Error(path + ": read failed (" + std::strerror(errno) + ")");
+  return bytes;
+}
+
+}  // namespace
+
+std::optional<ModelFormat> model_format_from_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".off") return ModelFormat::off;
+  if (ext == ".obj") return ModelFormat::obj;
+  if (ext == ".stl") return ModelFormat::stl;
+  if (ext == ".ply") return ModelFormat::ply;
+  return std::nullopt;
+}
+
+ReadResult read_model(const std::string& path) {
+  const auto format = model_format_from_path(path);
+  if (!format) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    throw Error(path + ": unknown model format " +
+                (ext.empty() ? std::string("(no extension)") : "'" + ext + "'") +
+                "; expected .off, .obj, .stl or .ply");
+  }
+  return read_model_from_memory(read_file(path), *format, path);
+}
+
+ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, const std::string& name) {
+  detail::SoupBuilder builder(name);
+  switch (format) {
+    case ModelFormat::off: detail::parse_off(bytes, builder); break;
+    case ModelFormat::obj: detail::parse_obj(bytes, builder); break;
+    case ModelFormat::stl: detail::parse_stl(bytes, builder); break;
+    case ModelFormat::ply: detail::parse_ply(bytes, builder); break;
+  }
+  return builder.finish();
+}
+
+}  // namespace delpsc::io

@@ -1,0 +1,160 @@
+#include "soup_builder.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+
+#include <delpsc/kernel/predicates.h>
+
+#include "error.h"
+
+namespace delpsc::io::detail {
+
+std::string at_line(std::size_t line) { return "line " + std::to_string(line); }
+std::string at_byte(std::size_t offset) { return "byte " + std::to_string(offset); }
+
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kMax = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < token.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(token[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    }
+  }
+  if (token.size() > kMax) out += "...";
+  return out + "'";
+}
+
+SoupBuilder::SoupBuilder(std::string name) : name_(std::move(name)), slots_(1024, 0) {}
+
+void SoupBuilder::fail(std::string_view place, std::string_view what) const {
+  std::string msg = name_ + ": ";
+  if (!place.empty()) msg.append(place).append(": ");
+  msg.append(what);
+  throw Error(msg);
+}
+
+void SoupBuilder::check_count(std::uint64_t count, std::uint64_t min_bytes, std::uint64_t available,
+                              std::uint64_t cap, std::string_view what,
+                              std::string_view place) const {
+  if (count > cap)
+    fail(place, "the header announces " + std::to_string(count) + " " + std::string(what) +
+                    ", more than the supported " + std::to_string(cap));
+  // count * min_bytes <= available, written so that it cannot overflow.
+  if (min_bytes > 0 && count > available / min_bytes)
+    fail(place, "the header announces " + std::to_string(count) + " " + std::string(what) +
+                    " but only " + std::to_string(available) +
+                    " bytes follow (each needs at least " + std::to_string(min_bytes) +
+                    "): truncated or corrupt file");
+}
+
+void SoupBuilder::reserve(std::size_t file_vertices, std::size_t triangles) {
+  file_to_merged_.reserve(file_vertices);
+  soup_.vertices.reserve(file_vertices);
+  soup_.triangles.reserve(triangles);
+  std::size_t want = slots_.size();
+  while (want < 2 * file_vertices) want *= 2;
+  if (want != slots_.size()) rehash(want);
+}
+
+namespace {
+
+std::uint64_t mix(std::uint64_t h) {
+  // The splitmix64 finaliser (Steele, Lea & Flood 2014): every input bit affects every output bit.
+  h ^= h >> 30;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  h ^= h >> 27;
+  h *= 0x94d049bb133111ebULL;
+  return h ^ (h >> 31);
+}
+
+std::uint64_t coordinate_hash(const Vec3& p) {
+  // Adding +0.0 turns -0.0 into +0.0, so equal doubles hash equally.
+  const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v + 0.0); };
+  return mix(bits(p.x()) ^ mix(bits(p.y()) ^ mix(bits(p.z()))));
+}
+
+}  // namespace
+
+void SoupBuilder::rehash(std::size_t slot_count) {
+  slots_.assign(slot_count, 0);
+  const std::size_t mask = slots_.size() - 1;
+  for (std::uint32_t v = 0; v < soup_.vertices.size(); ++v) {
+    std::size_t s = coordinate_hash(soup_.vertices[v]) & mask;
+    while (slots_[s] != 0) s = (s + 1) & mask;
+    slots_[s] = v + 1;
+  }
+}
+
+std::uint32_t SoupBuilder::find_or_insert(const Vec3& p) {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t s = coordinate_hash(p) & mask;
+  while (slots_[s] != 0) {
+    const std::uint32_t v = slots_[s] - 1;
+    if (soup_.vertices[v] == p) return v;  // == on doubles: -0 == +0, as hashed
+    s = (s + 1) & mask;
+  }
+  const auto v = static_cast<std::uint32_t>(soup_.vertices.size());
+  soup_.vertices.push_back(p);
+  slots_[s] = v + 1;
+  if (2 * soup_.vertices.size() > slots_.size()) rehash(2 * slots_.size());
+  return v;
+}
+
+bool SoupBuilder::add_vertex(double x, double y, double z) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return false;
+  file_to_merged_.push_back(find_or_insert(Vec3(x, y, z)));
+  return true;
+}
+
+void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
+  ++report_.polygons;
+  const std::uint32_t a = file_to_merged_[indices[0]];
+  for (std::size_t i = 1; i + 1 < indices.size(); ++i)
+    soup_.triangles.push_back({a, file_to_merged_[indices[i]], file_to_merged_[indices[i + 1]]});
+}
+
+ReadResult SoupBuilder::finish() {
+  if (soup_.triangles.empty())
+    fail("", report_.polygons == 0 && file_to_merged_.empty()
+                 ? "no vertices and no faces: empty model"
+                 : "no faces: the model has " + std::to_string(file_to_merged_.size()) +
+                       " vertices but no triangles (a point cloud?)");
+  report_.file_vertices = file_to_merged_.size();
+  report_.merged_vertices = file_to_merged_.size() - soup_.vertices.size();
+
+  const auto& V = soup_.vertices;
+  for (std::uint32_t t = 0; t < soup_.triangles.size(); ++t) {
+    const auto& [a, b, c] = soup_.triangles[t];
+    if (a == b || b == c || a == c || kernel::collinear(V[a].data(), V[b].data(), V[c].data()))
+      report_.degenerate_triangles.push_back(t);
+  }
+  if (!report_.degenerate_triangles.empty())
+    report_.warnings.push_back(std::to_string(report_.degenerate_triangles.size()) +
+                               " zero-area triangle(s) (repeated or collinear vertices), first: "
+                               "triangle " + std::to_string(report_.degenerate_triangles[0]));
+
+  // The exact predicates are guaranteed for coordinates 0 or of magnitude in [2^-140, 2^140]
+  // (kernel/predicates.h); say so rather than let a far-off model fail mysteriously later.
+  std::size_t out_of_range = 0;
+  for (const Vec3& p : V)
+    for (int k = 0; k < 3; ++k) {
+      const double m = std::fabs(p[k]);
+      if (m != 0 && (m < 0x1p-140 || m > 0x1p140)) ++out_of_range;
+    }
+  if (out_of_range > 0)
+    report_.warnings.push_back(std::to_string(out_of_range) +
+                               " coordinate(s) outside the range of exact predicates "
+                               "(0 or magnitude in [2^-140, 2^140]): rescale the model");
+  if (report_.merged_vertices > 0 && report_.format.rfind("STL", 0) != 0)
+    report_.warnings.push_back(std::to_string(report_.merged_vertices) +
+                               " duplicated vertex record(s) merged");
+  return {std::move(soup_), std::move(report_)};
+}
+
+}  // namespace delpsc::io::detail

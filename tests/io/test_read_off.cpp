@@ -1,0 +1,121 @@
+#include <doctest/doctest.h>
+
+#include <delpsc/io/read_model.h>
+
+#include "support/model_files.h"
+
+using namespace delpsc;
+using delpsc::test::io_error_of;
+using delpsc::test::read_bytes;
+
+namespace {
+const std::string kCube =
+    "OFF\n"
+    "# a unit cube, one quad per side\n"
+    "8 6 12\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+    "0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+}  // namespace
+
+TEST_CASE("OFF: a cube of quads becomes 12 triangles on 8 vertices") {
+  const auto r = read_bytes(kCube, io::ModelFormat::off);
+  CHECK(r.report.format == "OFF");
+  CHECK(r.soup.vertices.size() == 8);
+  REQUIRE(r.soup.triangles.size() == 12);
+  CHECK(r.report.polygons == 6);
+  CHECK(r.report.degenerate_triangles.empty());
+  // Fan triangulation from the first corner keeps the orientation: 0 3 2 1 -> (0 3 2) (0 2 1).
+  CHECK(r.soup.triangles[0] == std::array<std::uint32_t, 3>{0, 3, 2});
+  CHECK(r.soup.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 1});
+  CHECK(r.soup.vertices[6] == Vec3(1, 1, 1));
+}
+
+TEST_CASE("OFF: header variants, comments, colours and counts on the keyword line") {
+  const std::string tri = "3 0 1 2 0.5 0.5 0.5\n";
+  for (const std::string header : {"OFF 3 1 0\n", "COFF\n3 1 0\n", "3 1 0\n", "NOFF\n\n# c\n3 1\n"}) {
+    const std::string text = header + "0 0 0 1 0 0 1\n1 0 0 # comment\n0 1 0 1 1 1 1\n" + tri;
+    const auto r = read_bytes(text, io::ModelFormat::off);
+    CHECK(r.soup.vertices.size() == 3);
+    REQUIRE(r.soup.triangles.size() == 1);
+    CHECK(r.soup.vertices[2] == Vec3(0, 1, 0));
+  }
+}
+
+TEST_CASE("OFF: numbers in the spellings files use; anything else is garbage") {
+  const auto r = read_bytes("OFF\n3 1 0\n+1.5e2 -0 .25\n1E-3 2. -7\n0 0 1\n3 0 1 2\n",
+                            io::ModelFormat::off);
+  CHECK(r.soup.vertices[0] == Vec3(150, 0, 0.25));
+  CHECK(r.soup.vertices[1] == Vec3(0.001, 2, -7));
+  for (const char* bad : {"0x1", "1.5.2", "1e", "--1", "+-1", "1,5"}) {
+    const std::string text = std::string("OFF\n3 1 0\n") + bad + " 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const std::string msg = io_error_of([&] { read_bytes(text, io::ModelFormat::off); });
+    CHECK_MESSAGE(msg.find("line 3") != std::string::npos, msg);
+    CHECK_MESSAGE(msg.find("is not a number") != std::string::npos, msg);
+  }
+}
+
+TEST_CASE("OFF: exactly duplicated vertices are merged, -0 equals +0") {
+  // Two triangles sharing an edge whose endpoints are listed twice (as STL-converted files do).
+  const auto r = read_bytes("OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n-0 0 0\n1 1 0\n"
+                            "3 0 1 2\n3 3 5 4\n",
+                            io::ModelFormat::off);
+  CHECK(r.report.file_vertices == 6);
+  CHECK(r.report.merged_vertices == 2);
+  REQUIRE(r.soup.vertices.size() == 4);
+  CHECK(r.soup.triangles[1] == std::array<std::uint32_t, 3>{1, 3, 0});
+  // Nearly equal is not equal: merging is exact only.
+  const auto s = read_bytes("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1.0000000000000002 0 0\n3 0 1 2\n",
+                            io::ModelFormat::off);
+  CHECK(s.soup.vertices.size() == 4);
+}
+
+TEST_CASE("OFF: zero-area triangles are kept and reported") {
+  // Face 1 repeats a vertex; face 2 is three exactly collinear points; face 0 is fine.
+  const auto r = read_bytes("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n3 0 0\n"
+                            "3 0 1 2\n3 0 1 1\n3 0 3 4\n",
+                            io::ModelFormat::off);
+  REQUIRE(r.soup.triangles.size() == 3);
+  CHECK(r.report.degenerate_triangles == std::vector<std::uint32_t>{1, 2});
+  REQUIRE(!r.report.warnings.empty());
+  CHECK(r.report.warnings[0].find("2 zero-area") != std::string::npos);
+}
+
+TEST_CASE("OFF: errors name the line and the problem") {
+  struct Case {
+    std::string text, fragment;
+  };
+  const Case cases[] = {
+      {"", "empty file"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "line 6: face 0: vertex index 3 out of range [0, 3)"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "vertex index -1 out of range"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "line 6: face 0 has 2 vertices; at least 3"},
+      {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 1 has a NaN or infinite"},
+      {"OFF\n3 1 0\n0 0 0\n1 1e999 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 1 has a NaN or infinite"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n", "unexpected end of file in vertex 2 of 3"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "unexpected end of file in face 1 of 2"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1", "unexpected end of file in face 0 of 1"},
+      {"OFF\n99999999999 1 0\n0 0 0\n", "line 2: the header announces 99999999999 vertices"},
+      {"OFF\n3 4000000000 0\n0 0 0\n1 0 0\n0 1 0\n", "announces 4000000000 faces"},
+      {"OFF\n-3 1 0\n", "negative vertex or face count"},
+      {"OFF\nthree 1 0\n", "expected the vertex count, found 'three'"},
+      {"4OFF\n3 1 0\n", "OFF variant '4OFF' is not supported"},
+      {"OFF BINARY\n", "binary OFF is not supported"},
+      {"PLY\n3 1 0\n", "expected the header 'OFF', found 'PLY'"},
+      {"OFF\n0 0 0\n", "empty model"},
+      {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "no triangles"},
+      {"\x7f\x45LF\x02\x01\x01", "expected the header 'OFF', found '\\x7fELF\\x02\\x01\\x01'"},
+  };
+  for (const Case& c : cases) {
+    const std::string msg = io_error_of([&] { read_bytes(c.text, io::ModelFormat::off); });
+    CHECK_MESSAGE(msg.rfind("mem.off: ", 0) == 0, msg);
+    CHECK_MESSAGE(msg.find(c.fragment) != std::string::npos, "got: " << msg << "\nwant: " << c.fragment);
+  }
+}
+
+TEST_CASE("OFF: text after the last face is a warning, not an error") {
+  const auto r = read_bytes("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n", io::ModelFormat::off);
+  CHECK(r.soup.triangles.size() == 1);
+  REQUIRE(r.report.warnings.size() == 1);
+  CHECK(r.report.warnings[0].find("line 7") != std::string::npos);
+}
