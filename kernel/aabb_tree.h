@@ -1,0 +1,139 @@
+// An axis-aligned bounding-box tree over a set of triangles: which triangles a segment or a ray
+// meets (with the exact classification of constructions.h), the closest point of the set to a
+// point, and the triangles whose boxes overlap a box.
+//
+// Layout (flat arrays, no pointers): the nodes live in one vector in depth-first order, the left
+// child of node i is node i + 1 and the right child's index is stored; a leaf holds a contiguous
+// range of at most kLeafSize triangles of the tree's own copy of the triangle corners, stored in
+// leaf order next to their original ids. The tree therefore does not refer to the caller's arrays
+// after construction. Built by median split along the longest axis of the triangle centroids'
+// box (nth_element), so the depth is at most ceil(log2(n / kLeafSize)) + 1 whatever the input.
+//
+// Robustness: box tests are floating point but conservative (see segment_may_hit_box in the
+// .cpp: every slab parameter is widened by its proven rounding error), so a triangle is never
+// skipped because of a box test; whether a segment meets a triangle, and through which feature
+// (vertex, edge or interior), is then decided exactly by kernel::intersect_segment_triangle. A
+// segment through an edge shared by two triangles is reported by both, with kind edge.
+//
+// Cost: building O(n log n) time, about 130 bytes per triangle. A segment query costs
+// O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
+// through dense regions: it visits every leaf whose box the segment meets). Queries are const
+// and thread-safe; they append to caller-provided vectors so loops need not allocate.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "constructions.h"
+#include "point.h"
+
+namespace delpsc::kernel {
+
+/// A closed axis-aligned box [lo, hi]. Default-constructed empty (lo = +inf, hi = -inf).
+struct Box3 {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+  bool empty() const { return !(lo.x() <= hi.x() && lo.y() <= hi.y() && lo.z() <= hi.z()); }
+  void extend(const Vec3& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  void extend(const Box3& b) {
+    lo = lo.cwiseMin(b.lo);
+    hi = hi.cwiseMax(b.hi);
+  }
+  /// Length of the diagonal hi - lo (0 for a point, undefined for an empty box).
+  double diagonal() const { return (hi - lo).norm(); }
+  /// True iff the closed boxes share a point. Exact.
+  bool overlaps(const Box3& b) const {
+    return lo.x() <= b.hi.x() && b.lo.x() <= hi.x() && lo.y() <= b.hi.y() && b.lo.y() <= hi.y() &&
+           lo.z() <= b.hi.z() && b.lo.z() <= hi.z();
+  }
+  /// True iff p lies in the closed box. Exact.
+  bool contains(const Vec3& p) const {
+    return lo.x() <= p.x() && p.x() <= hi.x() && lo.y() <= p.y() && p.y() <= hi.y() &&
+           lo.z() <= p.z() && p.z() <= hi.z();
+  }
+  /// Squared Euclidean distance from p to the box (0 inside), in floating point.
+  double squared_distance(const Vec3& p) const {
+    const Vec3 d = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
+    return d.squaredNorm();
+  }
+};
+
+/// One triangle met by a segment or ray query.
+struct TriangleIntersection {
+  std::uint32_t triangle = 0;  ///< index into the triangle array given to the tree
+  TriangleHit hit;             ///< exact classification and the double point (constructions.h)
+};
+
+/// Result of a closest-point query.
+struct ClosestTriangle {
+  std::uint32_t triangle = 0;  ///< index into the triangle array given to the tree
+  Vec3 point = Vec3::Zero();   ///< closest point of that triangle
+  double squared_distance = 0;
+};
+
+class AabbTree {
+ public:
+  /// Maximum number of triangles per leaf.
+  static constexpr std::uint32_t kLeafSize = 4;
+
+  AabbTree() = default;
+
+  /// Builds the tree over `triangles` (vertex indices into `vertices`). Preconditions: every
+  /// index < vertices.size(), coordinates finite, fewer than 2^32 triangles. Degenerate
+  /// (collinear) triangles are allowed; queries never report them. O(n log n).
+  AabbTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
+
+  std::size_t size() const { return triangle_ids_.size(); }
+  bool empty() const { return triangle_ids_.empty(); }
+  /// Box of all triangles (empty box when the tree is empty).
+  Box3 bounds() const { return nodes_.empty() ? Box3{} : nodes_[0].box; }
+  /// Number of nodes and the depth (root alone = 1), for tests and statistics.
+  std::size_t node_count() const { return nodes_.size(); }
+  int depth() const;
+
+  /// Appends to `out` every triangle the closed segment [a, b] meets (contact != none, not
+  /// degenerate), in no particular order. `out` is not cleared.
+  void intersect_segment(const Vec3& a, const Vec3& b, std::vector<TriangleIntersection>& out) const;
+
+  /// Appends to `out` every triangle met by the ray {origin + t direction, t >= 0}; the ray is
+  /// represented exactly as in kernel::intersect_ray_triangle (through ray_through_point), so
+  /// all triangles see the same ray. Precondition: direction != 0.
+  void intersect_ray(const Vec3& origin, const Vec3& direction,
+                     std::vector<TriangleIntersection>& out) const;
+
+  /// The closest point of all triangles to p; nullopt iff the tree is empty. Among triangles at
+  /// equal distance, one of them. Best-first descent with pruning: O(log n) on typical input.
+  std::optional<ClosestTriangle> closest_point(const Vec3& p) const;
+
+  /// Appends the ids of the triangles whose bounding boxes overlap `box` (closed boxes): a
+  /// superset of the triangles that meet the box, exact for the box test itself.
+  void triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out) const;
+
+ private:
+  struct Node {
+    Box3 box;
+    /// Leaf: first triangle slot; inner node: index of the right child (left is this + 1).
+    std::uint32_t first_or_right = 0;
+    std::uint32_t count = 0;  ///< triangles in a leaf, 0 for an inner node
+  };
+
+  std::uint32_t build_node(std::vector<std::uint32_t>& order, std::vector<Vec3>& centroids,
+                           std::uint32_t begin, std::uint32_t end,
+                           std::span<const std::array<Vec3, 3>> corners);
+  void intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
+                      std::vector<TriangleIntersection>& out) const;
+
+  std::vector<Node> nodes_;
+  std::vector<std::array<Vec3, 3>> corners_;    // triangle corners in leaf order
+  std::vector<std::uint32_t> triangle_ids_;     // original id of each slot
+};
+
+}  // namespace delpsc::kernel

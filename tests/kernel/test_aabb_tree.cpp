@@ -1,0 +1,176 @@
+// The AABB tree against brute force: every query answered by the tree must be exactly the answer
+// of testing all triangles one by one, on random soups and on grids where segments pass exactly
+// through shared edges and vertices (where a careless box test would lose triangles).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/constructions.h>
+
+using namespace delpsc;
+using namespace delpsc::kernel;
+
+namespace {
+
+struct Soup {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+Soup random_soup(std::mt19937_64& rng, int n, double size) {
+  std::uniform_real_distribution<double> u(0, 1), small(-size, size);
+  Soup s;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const auto base = static_cast<std::uint32_t>(s.vertices.size());
+    for (int k = 0; k < 3; ++k) s.vertices.push_back(c + Vec3(small(rng), small(rng), small(rng)));
+    s.triangles.push_back({base, base + 1, base + 2});
+  }
+  return s;
+}
+
+// An n x n grid of unit squares in the plane z = 0, each split along its diagonal.
+Soup grid_soup(int n) {
+  Soup s;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) s.vertices.emplace_back(i, j, 0);
+  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+std::vector<std::uint32_t> brute_segment(const Soup& s, const Vec3& a, const Vec3& b) {
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t t = 0; t < s.triangles.size(); ++t) {
+    const auto& tri = s.triangles[t];
+    if (intersect_segment_triangle(a, b, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]))
+      ids.push_back(t);
+  }
+  return ids;
+}
+
+std::vector<std::uint32_t> brute_ray(const Soup& s, const Vec3& o, const Vec3& d) {
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t t = 0; t < s.triangles.size(); ++t) {
+    const auto& tri = s.triangles[t];
+    if (intersect_ray_triangle(o, d, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]))
+      ids.push_back(t);
+  }
+  return ids;
+}
+
+std::vector<std::uint32_t> ids_of(std::vector<TriangleIntersection> hits) {
+  std::vector<std::uint32_t> ids;
+  for (const auto& h : hits) ids.push_back(h.triangle);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+TEST_CASE("empty tree answers nothing") {
+  AabbTree tree;
+  std::vector<TriangleIntersection> hits;
+  tree.intersect_segment(Vec3(0, 0, 0), Vec3(1, 1, 1), hits);
+  CHECK(hits.empty());
+  CHECK_FALSE(tree.closest_point(Vec3(0, 0, 0)).has_value());
+  CHECK(tree.bounds().empty());
+}
+
+TEST_CASE("segment and ray queries equal brute force on random soups") {
+  std::mt19937_64 rng(12345);
+  const Soup s = random_soup(rng, 3000, 0.05);
+  const AabbTree tree(s.vertices, s.triangles);
+  REQUIRE(tree.size() == s.triangles.size());
+  CHECK(tree.depth() <= 12);  // median split: ceil(log2(3000 / 4)) + 1 = 11
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  std::size_t total = 0;
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    std::vector<TriangleIntersection> hits;
+    tree.intersect_segment(a, b, hits);
+    const auto got = ids_of(hits);
+    CHECK(got == brute_segment(s, a, b));
+    total += got.size();
+    hits.clear();
+    tree.intersect_ray(a, b - a, hits);
+    CHECK(ids_of(hits) == brute_ray(s, a, b - a));
+  }
+  CHECK(total > 300);  // the segments do meet triangles: the comparison is not vacuous
+}
+
+TEST_CASE("segments exactly through grid edges and vertices lose no triangle") {
+  const Soup s = grid_soup(16);
+  const AabbTree tree(s.vertices, s.triangles);
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> cell(0, 16);
+  for (int q = 0; q < 200; ++q) {
+    // Vertical segments through a grid vertex, through the middle of a grid edge, along a
+    // diagonal edge; and a segment lying in the plane along a grid line.
+    const double x = cell(rng), y = cell(rng);
+    for (const Vec3& p : {Vec3(x, y, 0), Vec3(x + 0.5, y, 0), Vec3(x + 0.25, y + 0.25, 0)}) {
+      std::vector<TriangleIntersection> hits;
+      tree.intersect_segment(p + Vec3(0, 0, -1), p + Vec3(0, 0, 2), hits);
+      CHECK(ids_of(hits) == brute_segment(s, p + Vec3(0, 0, -1), p + Vec3(0, 0, 2)));
+      if (p.x() <= 16 && p.y() <= 16) CHECK_FALSE(hits.empty());
+    }
+    std::vector<TriangleIntersection> hits;
+    tree.intersect_segment(Vec3(-1, y, 0), Vec3(17, y, 0), hits);
+    CHECK(ids_of(hits) == brute_segment(s, Vec3(-1, y, 0), Vec3(17, y, 0)));
+  }
+  // Through the interior vertex (8, 8): the six triangles around it all report kind vertex.
+  std::vector<TriangleIntersection> hits;
+  tree.intersect_segment(Vec3(8, 8, -1), Vec3(8, 8, 1), hits);
+  CHECK(hits.size() == 6);
+  for (const auto& h : hits) CHECK(h.hit.feature.kind == FeatureKind::vertex);
+}
+
+TEST_CASE("closest point equals brute force") {
+  std::mt19937_64 rng(99);
+  const Soup s = random_soup(rng, 2000, 0.03);
+  const AabbTree tree(s.vertices, s.triangles);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& tri : s.triangles) {
+      const auto c = closest_point_on_triangle(p, s.vertices[tri[0]], s.vertices[tri[1]], s.vertices[tri[2]]);
+      best = std::min(best, (c.point - p).squaredNorm());
+    }
+    const auto got = tree.closest_point(p);
+    REQUIRE(got.has_value());
+    CHECK(got->squared_distance == doctest::Approx(best).epsilon(1e-12));
+    CHECK((got->point - p).squaredNorm() == doctest::Approx(got->squared_distance).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("box query equals brute force on bounding boxes") {
+  std::mt19937_64 rng(5);
+  const Soup s = random_soup(rng, 2000, 0.04);
+  const AabbTree tree(s.vertices, s.triangles);
+  std::uniform_real_distribution<double> u(0, 1), w(0, 0.3);
+  for (int q = 0; q < 100; ++q) {
+    Box3 box;
+    box.extend(Vec3(u(rng), u(rng), u(rng)));
+    box.extend(box.lo + Vec3(w(rng), w(rng), w(rng)));
+    std::vector<std::uint32_t> got;
+    tree.triangles_in_box(box, got);
+    std::sort(got.begin(), got.end());
+    std::vector<std::uint32_t> want;
+    for (std::uint32_t t = 0; t < s.triangles.size(); ++t) {
+      Box3 tb;
+      for (auto v : s.triangles[t]) tb.extend(s.vertices[v]);
+      if (tb.overlaps(box)) want.push_back(t);
+    }
+    CHECK(got == want);
+  }
+}
