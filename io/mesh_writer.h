@@ -1,0 +1,34 @@
+// Writing surface meshes, the format chosen by the file extension (case-insensitive):
+//   .off .obj          text, triangles only; coordinates in shortest round-trip form (exact)
+//   .ply               binary little-endian PLY, double coordinates, triangles only (exact)
+//   .stl               binary STL, triangles only; coordinates rounded to float (the format's
+//                      precision), facet normals computed from the vertices
+//   .mesh              Medit (MeshVersionFormatted 2, doubles): Vertices, Triangles with the
+//                      patch id as reference, Edges with the curve id, Corners; 1-based indices
+//   .vtu               ParaView XML UnstructuredGrid, ASCII: triangles, edges and corners as cells
+//                      (VTK_TRIANGLE, VTK_LINE, VTK_VERTEX) with cell data "patch" (-1 off
+//                      triangles), "curve" (-1 off edges) and "dimension" (2, 1, 0)
+// Missing labels (empty triangle_patch / edge_curve) are written as 0 in Medit and -1 in VTU.
+// Cost: O(size of the mesh); the file is assembled in memory and written at once.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "surface_mesh.h"
+
+namespace delpsc::io {
+
+enum class MeshFormat { off, obj, ply, stl, medit, vtu };
+
+/// The format named by the extension of `path`, or nullopt.
+std::optional<MeshFormat> mesh_format_from_path(const std::string& path);
+
+/// Writes `mesh` to `path` in the format of its extension. Throws io::Error on an unknown
+/// extension, a mesh violating the SurfaceMesh invariants, or a failed write.
+void write_mesh(const std::string& path, const SurfaceMesh& mesh);
+
+/// The file contents write_mesh would produce (tests and in-memory users).
+std::string format_mesh(const SurfaceMesh& mesh, MeshFormat format);
+
+}  // namespace delpsc::io
