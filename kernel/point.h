@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products: every user of Vec3 may need them
 
 namespace delpsc {
 
