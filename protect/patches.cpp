@@ -1,0 +1,196 @@
+// Steps 4 and 6 of build_complex: patches as components across non-feature edges, the fans of
+// triangles around each vertex, the incidences between corners, curves and patches, and the
+// topology of each patch cut open along its features.
+#include <algorithm>
+
+#include "complex_build.h"
+
+namespace delpsc::protect::detail {
+
+VertexFans find_patches(Complex& complex) {
+  const auto n_tris = static_cast<std::uint32_t>(complex.triangles.size());
+
+  // Components across non-feature edges (a non-feature edge has exactly two triangles), by
+  // depth-first search from the smallest unlabelled triangle, so ids follow triangle order.
+  complex.triangle_patch.assign(n_tris, kNoIndex);
+  std::uint32_t patch_count = 0;
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t seed = 0; seed < n_tris; ++seed) {
+    if (complex.triangle_patch[seed] != kNoIndex) continue;
+    complex.triangle_patch[seed] = patch_count;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      for (const std::uint32_t e : complex.triangle_edges[t]) {
+        if (complex.edge_feature[e] != 0) continue;
+        for (const std::uint32_t n : complex.edge_triangle_ids(e))
+          if (complex.triangle_patch[n] == kNoIndex) {
+            complex.triangle_patch[n] = patch_count;
+            stack.push_back(n);
+          }
+      }
+    }
+    ++patch_count;
+  }
+  complex.patches.assign(patch_count, Patch{});
+  std::vector<std::uint32_t> counts(patch_count, 0);
+  for (const auto p : complex.triangle_patch) ++counts[p];
+  complex.patch_triangle_offsets = offsets_from_counts(counts);
+  complex.patch_triangles.resize(n_tris);
+  {
+    std::vector<std::uint32_t> fill(complex.patch_triangle_offsets.begin(), complex.patch_triangle_offsets.end() - 1);
+    for (std::uint32_t t = 0; t < n_tris; ++t) complex.patch_triangles[fill[complex.triangle_patch[t]]++] = t;
+  }
+
+  // Fans around each vertex. The corners (t, k) at a vertex are grouped with a local union-find:
+  // two corners are joined when their triangles share an edge at the vertex - any edge for
+  // sheets, a non-feature edge for wedges.
+  VertexFans fans;
+  const auto n_vertices = static_cast<std::uint32_t>(complex.vertices.size());
+  std::vector<std::uint32_t> vcount(n_vertices, 0);
+  for (const auto& t : complex.triangles)
+    for (auto v : t) ++vcount[v];
+  const std::vector<std::uint32_t> vstart = offsets_from_counts(vcount);
+  std::vector<std::uint32_t> vcorners(3 * static_cast<std::size_t>(n_tris));
+  {
+    std::vector<std::uint32_t> fill(vstart.begin(), vstart.end() - 1);
+    for (std::uint32_t t = 0; t < n_tris; ++t)
+      for (std::uint32_t k = 0; k < 3; ++k) vcorners[fill[complex.triangles[t][k]]++] = 3 * t + k;
+  }
+  fans.corner_wedge.assign(3 * static_cast<std::size_t>(n_tris), kNoIndex);
+  fans.vertex_sheets.assign(n_vertices, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> by_edge;  // (edge, local corner)
+  std::vector<std::uint32_t> local_id;
+  for (std::uint32_t v = 0; v < n_vertices; ++v) {
+    const std::uint32_t first = vstart[v], n = vstart[v + 1] - first;
+    if (n == 0) continue;
+    by_edge.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t c = vcorners[first + i], t = c / 3, k = c % 3;
+      by_edge.push_back({complex.triangle_edges[t][(k + 1) % 3], i});
+      by_edge.push_back({complex.triangle_edges[t][(k + 2) % 3], i});
+    }
+    std::sort(by_edge.begin(), by_edge.end());
+    UnionFind sheets(n), wedges(n);
+    std::uint32_t sheet_count = n;
+    for (std::size_t j = 1; j < by_edge.size(); ++j) {
+      if (by_edge[j].first != by_edge[j - 1].first) continue;
+      if (sheets.unite(by_edge[j - 1].second, by_edge[j].second)) --sheet_count;
+      if (complex.edge_feature[by_edge[j].first] == 0) wedges.unite(by_edge[j - 1].second, by_edge[j].second);
+    }
+    fans.vertex_sheets[v] = sheet_count;
+    local_id.assign(n, kNoIndex);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t root = wedges.find(i);
+      if (local_id[root] == kNoIndex) local_id[root] = fans.wedge_count++;
+      fans.corner_wedge[vcorners[first + i]] = local_id[root];
+    }
+  }
+  return fans;
+}
+
+void link_incidences(Complex& complex, const VertexFans& fans) {
+  const auto n_patches = static_cast<std::uint32_t>(complex.patches.size());
+  const auto n_curves = static_cast<std::uint32_t>(complex.curves.size());
+  const auto n_corners = static_cast<std::uint32_t>(complex.corner_vertex.size());
+
+  // Curves -> patches: the patches of the triangles on the curve's first edge. (Corners are
+  // placed wherever these change along a polyline, so any edge of the curve gives the same.)
+  complex.curve_patch_offsets.assign(1, 0);
+  complex.curve_patches.clear();
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> patch_curve;  // (patch, curve)
+  for (std::uint32_t c = 0; c < n_curves; ++c) {
+    const auto poly = complex.curve_polyline(c);
+    const std::uint32_t e = find_edge(complex, poly[0], poly[1]);
+    const auto begin = complex.curve_patches.size();
+    for (const auto t : complex.edge_triangle_ids(e)) complex.curve_patches.push_back(complex.triangle_patch[t]);
+    std::sort(complex.curve_patches.begin() + static_cast<std::ptrdiff_t>(begin), complex.curve_patches.end());
+    for (auto i = begin; i < complex.curve_patches.size(); ++i) patch_curve.push_back({complex.curve_patches[i], c});
+    complex.curve_patch_offsets.push_back(static_cast<std::uint32_t>(complex.curve_patches.size()));
+  }
+  std::sort(patch_curve.begin(), patch_curve.end());
+  {
+    std::vector<std::uint32_t> counts(n_patches, 0);
+    for (const auto& pc : patch_curve) ++counts[pc.first];
+    complex.patch_curve_offsets = offsets_from_counts(counts);
+    complex.patch_curves.clear();
+    for (const auto& pc : patch_curve) complex.patch_curves.push_back(pc.second);
+  }
+
+  // Corners -> curves, once per curve end, in curve order.
+  {
+    std::vector<std::uint32_t> counts(n_corners, 0);
+    for (const auto& curve : complex.curves) {
+      ++counts[curve.start_corner];
+      ++counts[curve.end_corner];
+    }
+    complex.corner_curve_offsets = offsets_from_counts(counts);
+    complex.corner_curves.assign(complex.corner_curve_offsets.back(), kNoIndex);
+    std::vector<std::uint32_t> fill(complex.corner_curve_offsets.begin(), complex.corner_curve_offsets.end() - 1);
+    for (std::uint32_t c = 0; c < n_curves; ++c) {
+      complex.corner_curves[fill[complex.curves[c].start_corner]++] = c;
+      complex.corner_curves[fill[complex.curves[c].end_corner]++] = c;
+    }
+  }
+
+  // Corners <-> patches: the patches of the triangles at the corner's vertex.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corner_patch;
+  for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
+    for (const auto v : complex.triangles[t])
+      if (complex.vertex_corner[v] != kNoIndex) corner_patch.push_back({complex.vertex_corner[v], complex.triangle_patch[t]});
+  std::sort(corner_patch.begin(), corner_patch.end());
+  corner_patch.erase(std::unique(corner_patch.begin(), corner_patch.end()), corner_patch.end());
+  {
+    std::vector<std::uint32_t> counts(n_corners, 0), pcounts(n_patches, 0);
+    for (const auto& kp : corner_patch) {
+      ++counts[kp.first];
+      ++pcounts[kp.second];
+    }
+    complex.corner_patch_offsets = offsets_from_counts(counts);
+    complex.corner_patches.clear();
+    for (const auto& kp : corner_patch) complex.corner_patches.push_back(kp.second);
+    complex.patch_corner_offsets = offsets_from_counts(pcounts);
+    complex.patch_corners.assign(complex.patch_corner_offsets.back(), kNoIndex);
+    std::vector<std::uint32_t> fill(complex.patch_corner_offsets.begin(), complex.patch_corner_offsets.end() - 1);
+    for (const auto& kp : corner_patch) complex.patch_corners[fill[kp.second]++] = kp.first;  // corner order
+  }
+
+  // Topology of each patch cut open along its features. Its vertices are the wedges, its edges
+  // the non-feature edges (two triangles of the patch) plus one copy of a feature edge per
+  // incident triangle of the patch (a boundary edge of the cut surface), its faces the
+  // triangles. Boundary loops are the components of the graph of boundary edges on wedges: on
+  // the cut surface every boundary wedge has exactly two boundary edges, so components are
+  // cycles.
+  std::vector<std::int64_t> chi(n_patches, 0);
+  std::vector<std::uint32_t> wedge_patch(fans.wedge_count, kNoIndex);
+  for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
+    const std::uint32_t p = complex.triangle_patch[t];
+    ++chi[p];  // F
+    for (std::uint32_t k = 0; k < 3; ++k) wedge_patch[fans.corner_wedge[3 * t + k]] = p;
+  }
+  for (const auto p : wedge_patch) ++chi[p];  // V
+  UnionFind loops(fans.wedge_count);
+  std::vector<char> on_boundary(fans.wedge_count, 0);
+  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+    const auto faces = complex.edge_triangle_ids(e);
+    if (complex.edge_feature[e] == 0) {
+      --chi[complex.triangle_patch[faces[0]]];  // E (interior edge)
+      continue;
+    }
+    for (const auto t : faces) {
+      --chi[complex.triangle_patch[t]];  // E (one boundary copy per side)
+      std::uint32_t w[2], n = 0;
+      for (std::uint32_t k = 0; k < 3; ++k)
+        if (complex.triangles[t][k] == complex.edges[e][0] || complex.triangles[t][k] == complex.edges[e][1])
+          w[n++] = fans.corner_wedge[3 * t + k];
+      loops.unite(w[0], w[1]);
+      on_boundary[w[0]] = on_boundary[w[1]] = 1;
+    }
+  }
+  for (std::uint32_t w = 0; w < fans.wedge_count; ++w)
+    if (on_boundary[w] && loops.find(w) == w) ++complex.patches[wedge_patch[w]].boundary_loops;
+  for (std::uint32_t p = 0; p < n_patches; ++p) complex.patches[p].euler_characteristic = static_cast<int>(chi[p]);
+}
+
+}  // namespace delpsc::protect::detail
