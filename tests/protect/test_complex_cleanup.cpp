@@ -1,0 +1,248 @@
+// Zero-area triangles, welding, bad orientation, user polylines, sheets meeting at a vertex and
+// bad input: the complex must keep the topology of the surface the soup describes.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include <delpsc/io/shapes.h>
+#include <delpsc/protect/complex.h>
+
+#include "support/complex_checks.h"
+
+using namespace delpsc;
+using protect::build_complex;
+using protect::Complex;
+using protect::ComplexOptions;
+using Topologies = std::vector<std::pair<int, int>>;
+
+namespace {
+
+struct Shared {
+  std::uint32_t t1, t2, a, b;  // t1 runs a -> b, t2 runs b -> a
+};
+
+bool runs(const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint32_t v) {
+  for (int k = 0; k < 3; ++k)
+    if (t[k] == u && t[(k + 1) % 3] == v) return true;
+  return false;
+}
+
+// The first pair of triangles sharing an edge for which `accept(a, b)` holds.
+template <class Accept>
+std::optional<Shared> find_shared_edge(const io::TriangleSoup& s, Accept accept) {
+  for (std::uint32_t t1 = 0; t1 < s.triangles.size(); ++t1)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = s.triangles[t1][k], b = s.triangles[t1][(k + 1) % 3];
+      if (!accept(s.vertices[a], s.vertices[b])) continue;
+      for (std::uint32_t t2 = 0; t2 < s.triangles.size(); ++t2)
+        if (t2 != t1 && runs(s.triangles[t2], b, a)) return Shared{t1, t2, a, b};
+    }
+  return std::nullopt;
+}
+
+// Puts a zero-area cap between t1 and t2 along their edge a-b: t2 is split at the edge's
+// midpoint c into two triangles, and the cap (b, a, c) fills the gap, a T-junction as mesh
+// repair tools and STL exporters leave them. Returns the cap's index.
+std::uint32_t insert_cap(io::TriangleSoup& s, const Shared& e) {
+  const auto c = static_cast<std::uint32_t>(s.vertices.size());
+  s.vertices.push_back((s.vertices[e.a] + s.vertices[e.b]) / 2);  // exact on the dyadic grids used
+  auto& t2 = s.triangles[e.t2];
+  std::uint32_t y = 0;
+  for (auto v : t2)
+    if (v != e.a && v != e.b) y = v;
+  t2 = {e.b, c, y};
+  s.triangles.push_back({c, e.a, y});
+  s.triangles.push_back({e.b, e.a, c});
+  return static_cast<std::uint32_t>(s.triangles.size() - 1);
+}
+
+void check_same_complex(const Complex& got, const Complex& want) {
+  CHECK(got.corner_count() == want.corner_count());
+  CHECK(got.curve_count() == want.curve_count());
+  CHECK(got.closed_curve_count() == want.closed_curve_count());
+  CHECK(got.patch_count() == want.patch_count());
+  CHECK(test::patch_topologies(got) == test::patch_topologies(want));
+  const auto problems = test::complex_problems(got);
+  for (const auto& p : problems) INFO(p);
+  CHECK(problems.empty());
+}
+
+}  // namespace
+
+TEST_CASE("a zero-area cap inside a flat sheet is healed, not turned into a hole") {
+  io::TriangleSoup s = io::make_square_sheet(4);
+  const Complex before = build_complex(s);
+  // An interior grid edge (not on the boundary y = 0 or x = 0 lines).
+  const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
+  REQUIRE(e);
+  const std::uint32_t cap = insert_cap(s, *e);
+  const Complex after = build_complex(s);
+  check_same_complex(after, before);
+  CHECK(after.cleanup.zero_area_triangles == std::vector<std::uint32_t>{cap});
+  CHECK(after.cleanup.split_triangles == 1);
+  CHECK(after.cleanup.dropped_caps == 0);
+  CHECK(after.triangles.size() == s.triangles.size());  // one cap out, one split triangle in
+}
+
+TEST_CASE("a zero-area cap along a cube edge keeps the edge one curve") {
+  io::TriangleSoup s = io::make_cube(2);
+  const Complex before = build_complex(s);
+  // An edge of the cube: both ends on the line y = 0, z = 0.
+  const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) {
+    return a.y() == 0 && a.z() == 0 && b.y() == 0 && b.z() == 0;
+  });
+  REQUIRE(e);
+  insert_cap(s, *e);
+  const Complex after = build_complex(s);
+  check_same_complex(after, before);
+  CHECK(after.cleanup.split_triangles == 1);
+  // The new midpoint lies inside a cube edge's curve, not at a corner.
+  const auto mid = static_cast<std::uint32_t>(s.vertices.size() - 1);
+  CHECK(after.vertex_corner[mid] == protect::kNoIndex);
+  int through = 0;
+  for (std::uint32_t k = 0; k < after.curve_count(); ++k) through += after.parameter_of_vertex(k, mid) ? 1 : 0;
+  CHECK(through == 1);
+}
+
+TEST_CASE("caps on the boundary leave the boundary where it was") {
+  const io::TriangleSoup sheet = io::make_square_sheet(4);
+  const Complex before = build_complex(sheet);
+  // A boundary edge a -> b of triangle t (on y = 0) and its midpoint c.
+  std::uint32_t t = 0, a = 0, b = 0, x = 0;
+  for (t = 0; t < sheet.triangles.size(); ++t) {
+    bool found = false;
+    for (int k = 0; k < 3 && !found; ++k) {
+      a = sheet.triangles[t][k];
+      b = sheet.triangles[t][(k + 1) % 3];
+      x = sheet.triangles[t][(k + 2) % 3];
+      found = sheet.vertices[a].y() == 0 && sheet.vertices[b].y() == 0;
+    }
+    if (found) break;
+  }
+  REQUIRE(t < sheet.triangles.size());
+  const auto c = static_cast<std::uint32_t>(sheet.vertices.size());
+  const Vec3 mid = (sheet.vertices[a] + sheet.vertices[b]) / 2;
+
+  SUBCASE("cap outside, on the long edge: t is split at c, c joins the boundary") {
+    io::TriangleSoup s = sheet;
+    s.vertices.push_back(mid);
+    s.triangles.push_back({b, a, c});
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.zero_area_triangles.size() == 1);
+    CHECK(after.cleanup.split_triangles == 1);
+  }
+  SUBCASE("cap outside, on the short edges: its long edge is free, it is simply removed") {
+    io::TriangleSoup s = sheet;
+    s.vertices.push_back(mid);
+    s.triangles[t] = {a, c, x};
+    s.triangles.push_back({c, b, x});
+    s.triangles.push_back({c, a, b});
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.zero_area_triangles.size() == 1);
+    CHECK(after.cleanup.split_triangles == 0);
+    CHECK(after.cleanup.dropped_caps == 0);
+  }
+}
+
+TEST_CASE("triangles with a repeated vertex, and repeated vertices, change nothing") {
+  io::TriangleSoup s = io::make_cube(3);
+  const Complex before = build_complex(s);
+  s.triangles.push_back({0, 0, 5});
+  s.triangles.push_back({7, 7, 7});
+  // A second copy of vertex 0, used by one triangle in place of the original.
+  s.vertices.push_back(s.vertices[0]);
+  const auto copy = static_cast<std::uint32_t>(s.vertices.size() - 1);
+  for (auto& tri : s.triangles) {
+    const auto it = std::find(tri.begin(), tri.end(), 0u);
+    if (it != tri.end() && tri[0] != tri[1]) {
+      *it = copy;
+      break;
+    }
+  }
+  const Complex after = build_complex(s);
+  check_same_complex(after, before);
+  CHECK(after.cleanup.zero_area_triangles.size() == 2);
+  CHECK(after.cleanup.welded_vertices == 1);
+}
+
+TEST_CASE("inconsistently oriented triangles make no false features") {
+  io::TriangleSoup s = io::make_square_sheet(6);
+  for (std::size_t t = 0; t < s.triangles.size(); t += 3) std::swap(s.triangles[t][0], s.triangles[t][1]);
+  const Complex c = build_complex(s);
+  CHECK(c.patch_count() == 1);
+  CHECK(c.curve_count() == 4);
+  CHECK(test::patch_topologies(c) == Topologies{{1, 1}});
+}
+
+TEST_CASE("user polylines split patches or cut slits") {
+  // make_square_sheet(4) numbers its grid vertices j * 5 + i.
+  const io::TriangleSoup s = io::make_square_sheet(4);
+  ComplexOptions across;
+  across.feature_polylines = {{10, 11, 12, 13, 14}};  // y = 0.5, from x = 0 to x = 1
+  const Complex split = build_complex(s, across);
+  CHECK(split.corner_count() == 6);
+  CHECK(split.curve_count() == 7);
+  CHECK(split.patch_count() == 2);
+  CHECK(test::patch_topologies(split) == Topologies{{1, 1}, {1, 1}});
+  CHECK(test::complex_problems(split).empty());
+
+  ComplexOptions slit;
+  slit.feature_polylines = {{11, 12, 13}};  // inside the sheet: a slit
+  const Complex cut = build_complex(s, slit);
+  CHECK(cut.corner_count() == 6);
+  CHECK(cut.curve_count() == 5);
+  CHECK(cut.patch_count() == 1);
+  CHECK(test::patch_topologies(cut) == Topologies{{0, 2}});  // a disc with a slit: an annulus
+  CHECK(test::complex_problems(cut).empty());
+
+  ComplexOptions loop;
+  loop.feature_polylines = {{6, 7, 8, 13, 18, 17, 16, 11, 6}};  // a closed square inside
+  const Complex ring = build_complex(s, loop);
+  CHECK(ring.corner_count() == 8);  // the sheet's 4 and the inner square's 4 (90° turns)
+  CHECK(ring.patch_count() == 2);
+  CHECK(test::patch_topologies(ring) == Topologies{{0, 2}, {1, 1}});
+  CHECK(test::complex_problems(ring).empty());
+
+  ComplexOptions bad;
+  bad.feature_polylines = {{0, 12}};
+  CHECK_THROWS_AS(build_complex(s, bad), std::invalid_argument);
+}
+
+TEST_CASE("two spheres touching at one vertex meet at a corner") {
+  io::TriangleSoup a = io::make_sphere(4);  // (1, 0, 0) is the centre of a cube face: a vertex
+  io::TriangleSoup b = a;
+  for (auto& p : b.vertices) p.x() += 2;  // (-1, 0, 0) moves onto (1, 0, 0)
+  const auto offset = static_cast<std::uint32_t>(a.vertices.size());
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (auto t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const Complex c = build_complex(a);
+  CHECK(c.cleanup.welded_vertices == 1);
+  REQUIRE(c.corner_count() == 1);
+  CHECK(c.corner_flags[0] == protect::kCornerSheets);
+  CHECK(c.vertices[c.corner_vertex[0]] == Vec3(1, 0, 0));
+  CHECK(c.curve_count() == 0);
+  CHECK(c.patch_count() == 2);
+  CHECK(c.corner_patch_ids(0).size() == 2);
+  CHECK(test::patch_topologies(c) == Topologies{{2, 0}, {2, 0}});
+}
+
+TEST_CASE("bad input is refused with std::invalid_argument") {
+  io::TriangleSoup s = io::make_cube(1);
+  ComplexOptions o;
+  o.feature_angle_degrees = 200;
+  CHECK_THROWS_AS(build_complex(s, o), std::invalid_argument);
+  s.triangles.push_back({0, 1, 99});
+  CHECK_THROWS_AS(build_complex(s), std::invalid_argument);
+  s = io::make_cube(1);
+  s.vertices[3].x() = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(build_complex(s), std::invalid_argument);
+  const Complex empty = build_complex(io::TriangleSoup{});
+  CHECK(empty.patch_count() == 0);
+  CHECK(empty.curve_count() == 0);
+}
