@@ -1,0 +1,133 @@
+#include "polygon_domain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace delpsc::refine {
+
+namespace {
+
+// The merge key of a hit: which mesh element the point lies on. Triangles around a mesh vertex
+// or along a mesh edge all report that vertex or edge (exact classification), so equal keys
+// within a patch are one crossing.
+struct KeyedHit {
+  std::uint32_t patch;
+  std::uint8_t kind;  // kernel::FeatureKind: vertex, edge, face
+  std::uint32_t element;
+  double t;
+  Vec3 point;
+};
+
+struct CoplanarSpan {
+  double t0, t1;
+  Vec3 p0, p1;
+};
+
+}  // namespace
+
+PolygonDomain::PolygonDomain(protect::Complex complex)
+    : complex_(std::move(complex)), tree_(complex_.vertices, complex_.triangles) {
+  patch_points_.assign(complex_.patch_count(), Vec3::Zero());
+  std::vector<double> best(complex_.patch_count(), -1);
+  for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
+    const auto& tri = complex_.triangles[t];
+    const Vec3 &p = complex_.vertices[tri[0]], &q = complex_.vertices[tri[1]], &r = complex_.vertices[tri[2]];
+    const double area2 = (q - p).cross(r - p).squaredNorm();
+    const std::uint32_t patch = complex_.triangle_patch[t];
+    if (area2 > best[patch]) {
+      best[patch] = area2;
+      patch_points_[patch] = (p + q + r) / 3;
+    }
+  }
+}
+
+PolygonDomain::PolygonDomain(const io::TriangleSoup& soup, const protect::ComplexOptions& options)
+    : PolygonDomain(protect::build_complex(soup, options)) {}
+
+CurveSegment PolygonDomain::curve_segment_in_ball(std::uint32_t c, double s, double r) const {
+  const protect::CurveInterval i = complex_.segment_in_ball(c, s, r);
+  return {i.s0, i.s1, i.whole};
+}
+
+void PolygonDomain::merge_hits(std::vector<kernel::TriangleIntersection>& hits, const Vec3& a, const Vec3& b,
+                               std::vector<SurfaceHit>& out) const {
+  out.clear();
+  thread_local std::vector<KeyedHit> crossings;
+  crossings.clear();
+  std::map<std::uint32_t, CoplanarSpan> spans;
+  const Vec3 d = b - a;
+  for (const auto& h : hits) {
+    const std::uint32_t patch = complex_.triangle_patch[h.triangle];
+    if (h.hit.contact == kernel::Contact::coplanar) {
+      const Vec3 exit = h.hit.t_exit == 0 ? a : h.hit.t_exit == 1 ? b : Vec3(a + h.hit.t_exit * d);
+      auto [it, fresh] = spans.try_emplace(patch, CoplanarSpan{h.hit.t, h.hit.t_exit, h.hit.point, exit});
+      if (fresh) continue;
+      CoplanarSpan& span = it->second;
+      if (h.hit.t < span.t0) {
+        span.t0 = h.hit.t;
+        span.p0 = h.hit.point;
+      }
+      if (h.hit.t_exit > span.t1) {
+        span.t1 = h.hit.t_exit;
+        span.p1 = exit;
+      }
+      continue;
+    }
+    const auto& tri = complex_.triangles[h.triangle];
+    const auto kind = h.hit.feature.kind;
+    const int index = h.hit.feature.index;
+    std::uint32_t element = h.triangle;
+    if (kind == kernel::FeatureKind::vertex) element = tri[index];
+    else if (kind == kernel::FeatureKind::edge) element = complex_.triangle_edges[h.triangle][index];
+    crossings.push_back({patch, static_cast<std::uint8_t>(kind), element, h.hit.t, h.hit.point});
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const KeyedHit& x, const KeyedHit& y) {
+    return std::tie(x.patch, x.kind, x.element, x.t) < std::tie(y.patch, y.kind, y.element, y.t);
+  });
+  for (std::size_t i = 0; i < crossings.size(); ++i) {
+    const KeyedHit& h = crossings[i];
+    if (i > 0 && h.patch == crossings[i - 1].patch && h.kind == crossings[i - 1].kind &&
+        h.element == crossings[i - 1].element)
+      continue;
+    // A crossing at the end of a coplanar overlap of the same patch is that overlap's end (the
+    // segment leaves the plane through a neighbouring triangle); parameters computed by the two
+    // different formulas may differ by rounding, hence the small relative slack.
+    const auto span = spans.find(h.patch);
+    if (span != spans.end()) {
+      const double slack = 1e-12 * (1 + std::abs(span->second.t0) + std::abs(span->second.t1));
+      if (h.t >= span->second.t0 - slack && h.t <= span->second.t1 + slack) continue;
+    }
+    out.push_back({h.point, h.t, h.patch, false});
+  }
+  for (const auto& [patch, span] : spans) {
+    out.push_back({span.p0, span.t0, patch, true});
+    if (span.t1 > span.t0) out.push_back({span.p1, span.t1, patch, true});
+  }
+  std::sort(out.begin(), out.end(), [](const SurfaceHit& x, const SurfaceHit& y) {
+    return std::tie(x.t, x.patch) < std::tie(y.t, y.patch);
+  });
+}
+
+void PolygonDomain::intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const {
+  thread_local std::vector<kernel::TriangleIntersection> hits;
+  hits.clear();
+  tree_.intersect_segment(a, b, hits);
+  merge_hits(hits, a, b, out);
+}
+
+void PolygonDomain::intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const {
+  thread_local std::vector<kernel::TriangleIntersection> hits;
+  hits.clear();
+  tree_.intersect_ray(origin, direction, hits);
+  merge_hits(hits, origin, origin + direction, out);
+}
+
+std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) const {
+  const auto c = tree_.closest_point(x);
+  if (!c) return std::nullopt;
+  return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
+}
+
+}  // namespace delpsc::refine

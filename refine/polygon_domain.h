@@ -1,0 +1,68 @@
+// The Domain of a polygon mesh: the piecewise smooth complex of protect::build_complex answers
+// the corner, curve and incidence queries, an AABB tree over its triangles the intersections.
+//
+// Intersections are classified exactly (kernel::intersect_segment_triangle), so a segment
+// through an edge or vertex of the mesh is seen by every triangle around it with the same
+// feature; the hits are then merged by (patch, mesh vertex / mesh edge / triangle), which
+// reports such a crossing once per patch. Coplanar overlaps (the segment runs inside a planar
+// part of a patch) are merged per patch into their extreme parameters, reported as two hits
+// flagged coplanar; a crossing of the same patch within that span is absorbed into it.
+//
+// Cost: construction O(T log T) for the tree (the complex is built beforehand); a segment query
+// O(log T + k) box tests and exact triangle tests for k triangles met, plus O(k log k) merging.
+#pragma once
+
+#include <delpsc/protect/complex.h>
+
+#include "domain.h"
+
+namespace delpsc::refine {
+
+class PolygonDomain final : public Domain {
+ public:
+  /// Takes the complex (moved in) and builds the tree over its triangles.
+  explicit PolygonDomain(protect::Complex complex);
+  /// Convenience: builds the complex of `soup` first.
+  explicit PolygonDomain(const io::TriangleSoup& soup, const protect::ComplexOptions& options = {});
+
+  const protect::Complex& complex() const { return complex_; }
+  const kernel::AabbTree& tree() const { return tree_; }
+
+  kernel::Box3 bounding_box() const override { return tree_.bounds(); }
+
+  std::uint32_t corner_count() const override { return static_cast<std::uint32_t>(complex_.corner_count()); }
+  Vec3 corner_point(std::uint32_t k) const override { return complex_.vertices[complex_.corner_vertex[k]]; }
+  std::span<const std::uint32_t> corner_curves(std::uint32_t k) const override { return complex_.corner_curve_ids(k); }
+  std::span<const std::uint32_t> corner_patches(std::uint32_t k) const override { return complex_.corner_patch_ids(k); }
+
+  std::uint32_t curve_count() const override { return static_cast<std::uint32_t>(complex_.curve_count()); }
+  double curve_length(std::uint32_t c) const override { return complex_.curves[c].length; }
+  bool curve_closed(std::uint32_t c) const override { return complex_.curves[c].closed; }
+  std::uint32_t curve_start_corner(std::uint32_t c) const override { return complex_.curves[c].start_corner; }
+  std::uint32_t curve_end_corner(std::uint32_t c) const override { return complex_.curves[c].end_corner; }
+  Vec3 curve_point(std::uint32_t c, double s) const override { return complex_.point_at(c, s); }
+  double curve_distance(std::uint32_t c, double s0, double s1) const override { return complex_.curve_distance(c, s0, s1); }
+  CurveSegment curve_segment_in_ball(std::uint32_t c, double s, double r) const override;
+  double curve_closest_parameter(std::uint32_t c, const Vec3& p) const override { return complex_.closest_parameter(c, p); }
+  std::span<const std::uint32_t> curve_patches(std::uint32_t c) const override { return complex_.curve_patch_ids(c); }
+
+  std::uint32_t patch_count() const override { return static_cast<std::uint32_t>(complex_.patch_count()); }
+  std::span<const std::uint32_t> patch_curves(std::uint32_t p) const override { return complex_.patch_curve_ids(p); }
+  Vec3 patch_interior_point(std::uint32_t p) const override { return patch_points_[p]; }
+
+  void intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const override;
+  void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const override;
+  std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const override;
+
+ private:
+  // Merges the tree's per-triangle hits into per-patch hits (see the file comment). `b` is the
+  // segment's end or, for a ray, origin + direction (t is in units of b - a either way).
+  void merge_hits(std::vector<kernel::TriangleIntersection>& hits, const Vec3& a, const Vec3& b,
+                  std::vector<SurfaceHit>& out) const;
+
+  protect::Complex complex_;
+  kernel::AabbTree tree_;
+  std::vector<Vec3> patch_points_;  // centroid of each patch's largest triangle
+};
+
+}  // namespace delpsc::refine
