@@ -119,11 +119,13 @@ inline std::vector<WeightedPoint> grid(Rng& rng, std::size_t k) {
   return sample_distinct(rng, g, k);
 }
 
-/// Gives every point the weight |p - c|^2 - r2 for a random integer centre c and r2, so that all
-/// are orthogonal to one sphere; false if that is not exact for this set.
+/// Gives every point the weight |p - c|^2 - r2 for a random integer centre c and r2 of random
+/// magnitudes (|c| up to 2^24, r2 up to 2^48), so that all are orthogonal to one sphere; false
+/// if that is not exact for this set. A far centre or a large r2 makes the weights differ far
+/// more than the squared distances between the points: a different balance of the lifted column.
 inline bool orthogonal_to_random_sphere(Rng& rng, std::vector<WeightedPoint>& pts) {
-  const WeightedPoint c = random_integer_vector(rng, 1 << 10);
-  const double r2 = static_cast<double>(rng.integer(0, 1 << 20));
+  const WeightedPoint c = random_integer_vector(rng, std::int64_t{1} << rng.integer(0, 24));
+  const double r2 = static_cast<double>(rng.integer(0, std::int64_t{1} << rng.integer(0, 48)));
   return set_orthogonal_weights(pts, c.data(), r2);
 }
 

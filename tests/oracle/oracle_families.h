@@ -57,6 +57,36 @@ auto scaled(Gen gen) {
   };
 }
 
+/// The generator's output scaled to one end of the range: by 2^kmin or 2^kmax of
+/// scale_bounds(), so that its smallest or its largest magnitude touches the range's limit.
+template <class Gen>
+auto scaled_to_extreme(Gen gen) {
+  return [gen](Rng& rng, Case& c) {
+    if (!gen(rng, c)) return false;
+    Points p(c.pts.begin(), c.pts.begin() + c.n);
+    const auto [kmin, kmax] = scale_bounds(p);
+    if (kmin > kmax) return false;
+    scale_pow2(p, rng.chance(0.5) ? kmin : kmax);
+    c.set(p);
+    return true;
+  };
+}
+
+/// k points drawn with replacement from the generator's points: repeated points (equal
+/// positions, with equal or, half of the time for the first one, different weights), which the
+/// plain predicates allow.
+template <class Gen>
+auto with_repeats(Gen gen, int k) {
+  return [gen, k](Rng& rng, Case& c) {
+    if (!gen(rng, c)) return false;
+    const Case pool = c;
+    for (int i = 0; i < k; ++i) c.pts[static_cast<std::size_t>(i)] = pool.pts[rng.index(static_cast<std::size_t>(pool.n))];
+    c.n = k;
+    if (rng.chance(0.5)) c.pts[0].w = pool.pts[0].w + 1;  // same place, another weight
+    return true;
+  };
+}
+
 /// The generator's output with its points in a random order (so that the special point of a
 /// construction, e.g. the one off the circle, is not always last).
 template <class Gen>

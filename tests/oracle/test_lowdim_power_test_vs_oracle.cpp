@@ -223,6 +223,16 @@ TEST_CASE("power_test (4 coplanar points) agrees with the exact oracle") {
        maybe(mixed_plane_mixed_weights)},
       {"multi-scale", "per-point scales, plane x_a = 0, orthogonal", 50'000, kDegenerate,
        maybe(mixed_plane_orthogonal)},
+      {"multi-scale", "orthogonal, weights moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(orthogonal, 0b1000))},
+      {"degenerate", "t at the position of p, q or r", 25'000, kAnyRate,
+       maybe([](Rng& rng, Points& p) {
+         if (!tilted_orthogonal(rng, p)) return false;
+         const double w = p[3].w;
+         p[3] = p[rng.index(3)];
+         if (rng.chance(0.5)) p[3].w = w;
+         return true;
+       })},
       {"multi-scale", "per-point scales, plane, weights moved", 25'000, kNearDegenerate,
        nudged(maybe(mixed_plane_orthogonal), 0b1000)},
   };
@@ -255,6 +265,16 @@ TEST_CASE("power_test (3 collinear points) agrees with the exact oracle") {
        maybe(mixed_line_mixed_weights)},
       {"multi-scale", "per-point scales on an axis, orthogonal", 50'000, kDegenerate,
        maybe(mixed_axis_orthogonal)},
+      {"multi-scale", "orthogonal, weights moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(orthogonal, 0b1000))},
+      {"degenerate", "t at the position of p or q", 25'000, kAnyRate,
+       maybe([](Rng& rng, Points& p) {
+         if (!line_orthogonal(rng, p)) return false;
+         const double w = p[2].w;
+         p[2] = p[rng.index(2)];
+         if (rng.chance(0.5)) p[2].w = w;
+         return true;
+       })},
       {"multi-scale", "per-point scales on an axis, weights moved", 25'000, kNearDegenerate,
        nudged(maybe(mixed_axis_orthogonal), 0b1000)},
   };

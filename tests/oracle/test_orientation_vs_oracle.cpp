@@ -95,6 +95,10 @@ TEST_CASE("orient3d agrees with the exact oracle") {
          c.set(mixed_scale_diagonal_plane(rng, 4, a, (a + 1 + static_cast<int>(rng.integer(0, 1))) % 3));
          return true;
        }},
+      {"multi-scale", "integer plane moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(coplanar_near)},
+      {"degenerate", "repeated points (4 draws from 4 grid points)", 25'000, ZeroRate{0.85, 1},
+       with_repeats(always([](Rng& rng) { return grid(rng, 4); }), 4)},
       {"multi-scale", "mixed magnitudes on x_a = c, moved off it", 25'000, kNearDegenerate,
        [](Rng& rng, Case& c) {
          const int a = static_cast<int>(rng.integer(0, 2));
@@ -183,6 +187,18 @@ TEST_CASE("orient2d agrees with the exact oracle on every ordered pair of axes")
          c.set(mixed_scale_line(rng, 3));
          return true;
        }},
+      {"multi-scale", "integer line moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(collinear3_near)},
+      {"degenerate", "repeated points (3 draws from 3)", 25'000, ZeroRate{0.7, 1},
+       [with_axes](Rng& rng, Case& c) {
+         with_axes(rng, c);
+         const int i = c.i, j = c.j;
+         if (!with_repeats(always([](Rng& r) { return uniform_points(r, 3, -1, 1); }), 3)(rng, c))
+           return false;
+         c.i = i;
+         c.j = j;
+         return true;
+       }},
       {"multi-scale", "mixed magnitudes, x_i = c", 50'000, kDegenerate,
        [with_axes](Rng& rng, Case& c) {
          with_axes(rng, c);
@@ -230,6 +246,10 @@ std::vector<Family> triple_families() {
        [](Rng& rng, Case& c) { c.set(mixed_scale_points(rng, 3, false)); return true; }},
       {"multi-scale", "mixed magnitudes on a line through 0", 75'000, kDegenerate,
        [](Rng& rng, Case& c) { c.set(mixed_scale_line(rng, 3)); return true; }},
+      {"multi-scale", "integer line moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(collinear3_near)},
+      {"degenerate", "repeated points (3 draws from 3)", 25'000, ZeroRate{0.7, 1},
+       with_repeats(always([](Rng& rng) { return uniform_points(rng, 3, -1, 1); }), 3)},
       {"multi-scale", "mixed magnitudes on x = c or y = c", 50'000, kGeneric,
        [](Rng& rng, Case& c) {
          c.set(mixed_scale_axis_plane(rng, 3, static_cast<int>(rng.integer(0, 1))));
@@ -338,6 +358,8 @@ TEST_CASE("coplanar_orientation (4 points) agrees with the exact oracle") {
        }},
       {"multi-scale", "s on line pq x 2^k", 75'000, kDegenerate, scaled(tilted)},
       {"multi-scale", "s near line pq x 2^k", 75'000, kNearDegenerate, scaled(axis_near)},
+      {"multi-scale", "s near line pq, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(axis_near)},
       {"multi-scale", "mixed magnitudes on x_a = c", 50'000, kGeneric,
        [accept](Rng& rng, Case& c) {
          return accept(c, mixed_scale_axis_plane(rng, 4, static_cast<int>(rng.integer(0, 2))));

@@ -124,6 +124,8 @@ TEST_CASE("power_distance_sign agrees with the exact oracle") {
        })},
       {"multi-scale", "|c| ~ 2^ec, |x - c| ~ 2^(ec-40..ec), on it", 50'000, kDegenerate,
        mixed_offset},
+      {"multi-scale", "moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(integer, 0b1111))},
       {"multi-scale", "|c| ~ 2^ec, |x - c| ~ 2^(ec-40..ec), moved", 25'000, kNearDegenerate,
        nudged(mixed_offset, 0b1111)},
   };
@@ -178,6 +180,8 @@ TEST_CASE("compare_power_distance agrees with the exact oracle") {
        })},
       {"multi-scale", "|x| ~ 2^ec, offsets 2^(ec-40..ec+10), equal powers", 50'000, kDegenerate,
        mixed_equal},
+      {"multi-scale", "equal powers moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(integer, 0b1111))},
       {"multi-scale", "|x| ~ 2^ec, offsets, equal powers, moved", 25'000, kNearDegenerate,
        nudged(mixed_equal, 0b1111)},
   };

@@ -94,6 +94,11 @@ TEST_CASE("insphere agrees with the exact oracle") {
        always([](Rng& rng) { return mixed_scale_points(rng, 5, false); })},
       {"multi-scale", "4 concyclic x 2^k + a point of any magnitude", 50'000, kDegenerate,
        shuffled(always(concyclic_plus_one_mixed))},
+      {"multi-scale", "lattice sphere moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(sphere, 0b0111))},
+      // Two equal rows make the determinant 0; about 4% of the draws are 5 distinct points.
+      {"degenerate", "repeated points (5 draws from 5)", 25'000, ZeroRate{0.9, 1},
+       with_repeats(sphere, 5)},
   };
   const long n = run_families(
       "insphere", 11, families,
@@ -128,6 +133,11 @@ TEST_CASE("power_test (5 points) agrees with the exact oracle") {
        always([](Rng& rng) { return mixed_scale_points(rng, 5, true); })},
       {"multi-scale", "per-point scales 2^+-120, orthogonal", 50'000, kDegenerate,
        always([](Rng& rng) { return mixed_scale_orthogonal(rng, 5); })},
+      {"multi-scale", "orthogonal moved, at the range's ends", 25'000, kNearDegenerate,
+       scaled_to_extreme(nudged(orthogonal, 0b1111))},
+      // Repeated points with different weights are not degenerate: any zero rate.
+      {"degenerate", "repeated points (5 draws from 5)", 25'000, kAnyRate,
+       with_repeats(orthogonal, 5)},
       {"multi-scale", "per-point scales, orthogonal, moved", 25'000, kNearDegenerate,
        nudged(always([](Rng& rng) { return mixed_scale_orthogonal(rng, 5); }), 0b1111)},
   };
