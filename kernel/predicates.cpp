@@ -286,8 +286,12 @@ int power_test(const double* p, const double* q, const double* r, const double* 
   // the same plane), so it never decides. The result does not depend on the order of p, q, r.
   static constexpr int kAxes[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   for (const auto& ax : kAxes) {
+    // A projection in which p, q, r are collinear has an exactly zero lifted determinant; the
+    // cheap orientation says so at once, where the lifted filter could only fail and go exact.
+    const int o = orient2d(p, q, r, ax[0], ax[1]);
+    if (o == 0) continue;
     const int cmp = planar_power_sign(p, q, r, t, ax[0], ax[1]);
-    if (cmp != 0) return cmp * orient2d(p, q, r, ax[0], ax[1]);
+    if (cmp != 0) return cmp * o;
   }
   return 0;
 }
