@@ -23,12 +23,59 @@ namespace {
 
 constexpr std::uint8_t kInConflict = 1;     // cell mark: in the conflict region
 constexpr std::uint8_t kNotInConflict = 2;  // cell mark: tested, not in conflict
-constexpr std::uint8_t kOnBoundary = 1;     // point mark: vertex of a cavity boundary facet
-constexpr std::uint8_t kInterior = 2;       // point mark: vertex inside the cavity
+// Cavities with at most this many boundary vertices (all but pathological ones) glue their new
+// cells through a direct (m x m) table; larger ones through a hash map.
+constexpr std::size_t kDirectEdgeTable = 128;
+
+// Point ids stay below 2^31, so the sentinels (infinite vertex, dead cell) are the only vertex
+// values with the top bit set: one OR tells whether a live cell is infinite.
+constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
+inline bool has_infinite_vertex(const std::array<PointId, 4>& v) {
+  return ((v[0] | v[1] | v[2] | v[3]) >> 31) != 0;
+}
 
 bool same_position(const double* a, const double* b) {
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
+
+// Perturbed power test of p against a finite, positively oriented cell: +1 conflict, -1 not.
+// The filtered test is inlined; only exact ties (degenerate inputs) pay for the tie-break call.
+// Unweighted sets use insphere, whose filter is a little cheaper.
+inline bool finite_cell_conflict(const double* const q[4], const double* p, bool weighted) {
+  const int o = weighted ? kn::power_test(q[0], q[1], q[2], q[3], p) : kn::insphere(q[0], q[1], q[2], q[3], p);
+  if (o != 0) return o > 0;
+  return (weighted ? kn::power_test_perturbed(q[0], q[1], q[2], q[3], p)
+                   : kn::insphere_perturbed(q[0], q[1], q[2], q[3], p)) > 0;
+}
+
+/// Appends to a scratch vector through a raw pointer and a local count (kept in registers), the
+/// vector being resized to its capacity up front and to the count at the end. reserve_more()
+/// before a burst of push()es keeps push() check-free.
+template <class T>
+class GrowableList {
+ public:
+  explicit GrowableList(std::vector<T>& v) : v_(v) {
+    v_.resize(std::max<std::size_t>(v_.capacity(), 64));
+    data_ = v_.data();
+  }
+  ~GrowableList() { v_.resize(size_); }
+  GrowableList(const GrowableList&) = delete;
+  GrowableList& operator=(const GrowableList&) = delete;
+  void reserve_more(std::size_t k) {
+    if (size_ + k > v_.size()) {
+      v_.resize(2 * (size_ + k));
+      data_ = v_.data();
+    }
+  }
+  void push(const T& x) { data_[size_++] = x; }
+  std::size_t size() const { return size_; }
+  const T& operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  std::vector<T>& v_;
+  T* data_;
+  std::size_t size_ = 0;
+};
 
 }  // namespace
 
@@ -36,14 +83,17 @@ bool same_position(const double* a, const double* b) {
 /// once the vectors have grown to the largest cavity seen.
 struct RegularTriangulation::Scratch {
   std::vector<std::uint8_t> cell_mark;   // by CellId; all zero between operations
-  std::vector<std::uint8_t> point_mark;  // by PointId; all zero between operations
+  std::vector<std::uint32_t> local_id;   // by PointId; all zero between operations
   std::vector<CellId> conflict;          // conflict region, in discovery order
   std::vector<CellId> rejected;          // neighbours tested and found not in conflict
   std::vector<Facet> boundary;           // cavity boundary, as facets of conflict cells
   std::vector<CellId> created;           // cells made by the current operation
   std::vector<PointId> interior;         // vertices made redundant by the current insertion
   std::vector<PointId> relocate;         // hidden points whose cell was destroyed
-  SmallMap edges;                        // cavity boundary edge -> new cell facet
+  std::vector<PointId> boundary_vertices;  // vertices of the cavity boundary; local id = rank + 1
+  std::vector<std::array<std::uint32_t, 4>> created_local;  // local ids of each new cell's vertices
+  std::vector<std::uint32_t> edge_table;  // directed boundary edge (local ids) -> new cell facet
+  SmallMap edges;                        // the same for cavities too large for the table
 
   // Removal.
   std::vector<CellId> star;           // cells incident to the removed vertex
@@ -117,7 +167,7 @@ void RegularTriangulation::clear() {
   hidden_storage_ = false;
   if (scratch_) {
     scratch_->cell_mark.clear();
-    scratch_->point_mark.clear();
+    scratch_->local_id.clear();
   }
 }
 
@@ -125,8 +175,8 @@ void RegularTriangulation::reserve(std::size_t points) {
   points_.reserve(points);
   point_cell_.reserve(points);
   status_.reserve(points);
-  // A Delaunay triangulation of n uniform points has about 6.7 n cells.
-  const std::size_t cells = points + points / 10 * 68 / 10 + 64;
+  // A Delaunay triangulation of n uniform points has about 6.75 n cells.
+  const std::size_t cells = points / 100 * 685 + 64;
   cells_.reserve(cells);
   scratch().cell_mark.reserve(cells);
 }
@@ -139,12 +189,14 @@ std::size_t RegularTriangulation::memory_bytes() const {
            pending_.capacity() * sizeof(PointId);
   if (scratch_) {
     const Scratch& s = *scratch_;
-    bytes += sizeof(Scratch) + s.cell_mark.capacity() + s.point_mark.capacity() +
+    bytes += sizeof(Scratch) + s.cell_mark.capacity() +
+             (s.local_id.capacity() + s.edge_table.capacity() + 4 * s.created_local.capacity()) *
+                 sizeof(std::uint32_t) +
              (s.conflict.capacity() + s.rejected.capacity() + s.created.capacity() +
               s.star.capacity() + s.hole.capacity() + s.new_of.capacity()) * sizeof(CellId) +
              s.boundary.capacity() * sizeof(Facet) +
              (s.interior.capacity() + s.relocate.capacity() + s.link_points.capacity() +
-              s.reinsert.capacity()) * sizeof(PointId) +
+              s.reinsert.capacity() + s.boundary_vertices.capacity()) * sizeof(PointId) +
              s.edges.memory_bytes() + s.local_of.memory_bytes() + s.facet_map.memory_bytes() +
              s.outer_of.memory_bytes() + s.new_of_star.memory_bytes();
     if (s.link) bytes += s.link->memory_bytes();
@@ -156,16 +208,22 @@ std::size_t RegularTriangulation::memory_bytes() const {
 // Cells, points, hidden lists
 // ---------------------------------------------------------------------------------------------
 
-CellId RegularTriangulation::new_cell() {
-  if (free_head_ != kNoCell) {
-    const CellId c = free_head_;
-    free_head_ = cells_[c].n[0];
-    --free_count_;
-    return c;
-  }
+// Recycles the most recently freed slot (the cells of the last cavity, hot in cache and close in
+// space to the next insertion), else appends.
+inline CellId RegularTriangulation::new_cell() {
+  if (free_head_ == kNoCell) return append_cell();
+  const CellId c = free_head_;
+  free_head_ = cells_[c].n[0];
+  --free_count_;
+  return c;
+}
+
+CellId RegularTriangulation::append_cell() {
   // Neighbour links keep the cell id in 30 bits.
   if (cells_.size() >= (std::size_t{1} << 30))
     throw std::length_error("RegularTriangulation: more than 2^30 cells");
+  // Grow by a quarter rather than doubling: the cell array is most of the memory.
+  if (cells_.size() == cells_.capacity()) cells_.reserve(cells_.size() + cells_.size() / 4 + 1024);
   cells_.push_back(Cell{});
   if (hidden_storage_) cell_hidden_.push_back(kNoPoint);
   return static_cast<CellId>(cells_.size() - 1);
@@ -181,8 +239,8 @@ void RegularTriangulation::free_cell(CellId c) {
 PointId RegularTriangulation::append_point(const WeightedPoint& p) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
     throw std::invalid_argument("RegularTriangulation::insert: non-finite coordinate or weight");
-  if (points_.size() >= kNoPoint)
-    throw std::length_error("RegularTriangulation: too many points for 32-bit ids");
+  if (points_.size() >= kMaxPoints)
+    throw std::length_error("RegularTriangulation: more than 2^31 points");
   const auto id = static_cast<PointId>(points_.size());
   points_.push_back(p);
   point_cell_.push_back(kNoCell);
@@ -336,14 +394,18 @@ PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes,
   return id;
 }
 
-PointId RegularTriangulation::insert(std::span<const WeightedPoint> points) {
+PointId RegularTriangulation::insert(std::span<const WeightedPoint> points,
+                                     std::vector<PointId>* ids) {
   const auto first = static_cast<PointId>(points_.size());
   reserve(points_.size() + points.size());
-  for (const WeightedPoint& p : points) append_point(p);
   std::vector<std::uint32_t> order;
   brio_order(points, order);
-  for (const std::uint32_t k : order) {
-    const PointId id = first + k;
+  if (ids) ids->resize(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    append_point(points[order[k]]);
+    if (ids) (*ids)[order[k]] = first + static_cast<PointId>(k);
+  }
+  for (PointId id = first; id < points_.size(); ++id) {
     if (dimension() < 3)
       add_pending(id, nullptr);
     else
@@ -436,9 +498,7 @@ bool RegularTriangulation::in_conflict(CellId c, const double* p, PointId replac
       q[k] = points_[v].data();
     }
   }
-  if (infinite < 0)
-    return (weighted_ ? kn::power_test_perturbed(q[0], q[1], q[2], q[3], p)
-                      : kn::insphere_perturbed(q[0], q[1], q[2], q[3], p)) > 0;
+  if (infinite < 0) return finite_cell_conflict(q, p, weighted_);
   const int o = kn::orient3d(q[0], q[1], q[2], q[3]);
   if (o != 0) return o > 0;
   const int* f = kFacetSlots[infinite];
@@ -482,28 +542,45 @@ void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* chan
 void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId replaced) {
   Scratch& s = scratch();
   if (s.cell_mark.size() < cells_.size()) s.cell_mark.resize(cells_.size(), 0);
-  std::uint8_t* mark = s.cell_mark.data();
-  s.conflict.clear();
-  s.rejected.clear();
-  s.boundary.clear();
+  // Raw pointers and local counts: the byte-sized marks may alias anything, so going through the
+  // vectors would reload their internals after every mark store.
+  std::uint8_t* const mark = s.cell_mark.data();
+  const Cell* const cells = cells_.data();
+  const WeightedPoint* const points = points_.data();
+  const bool weighted = weighted_;
+  GrowableList<CellId> conflict(s.conflict), rejected(s.rejected);
+  GrowableList<Facet> boundary(s.boundary);
   mark[start] = kInConflict;
-  s.conflict.push_back(start);
-  for (std::size_t k = 0; k < s.conflict.size(); ++k) {
-    const CellId x = s.conflict[k];
+  conflict.push(start);
+  for (std::size_t k = 0; k < conflict.size(); ++k) {
+    const CellId x = conflict[k];
+    conflict.reserve_more(4);
+    rejected.reserve_more(4);
+    boundary.reserve_more(4);
     for (int i = 0; i < 4; ++i) {
-      const CellId y = cells_[x].n[i] >> 2;
+      const CellId y = cells[x].n[i] >> 2;
       const std::uint8_t m = mark[y];
       if (m == kInConflict) continue;
       if (m == 0) {
-        if (in_conflict(y, p, replaced)) {
+        // Inline fast path for the common case: a finite cell, no replaced vertex.
+        const Cell& cy = cells[y];
+        bool in;
+        if (replaced == kNoPoint && !has_infinite_vertex(cy.v)) {
+          const double* q[4] = {points[cy.v[0]].data(), points[cy.v[1]].data(),
+                                points[cy.v[2]].data(), points[cy.v[3]].data()};
+          in = finite_cell_conflict(q, p, weighted);
+        } else {
+          in = in_conflict(y, p, replaced);
+        }
+        if (in) {
           mark[y] = kInConflict;
-          s.conflict.push_back(y);
+          conflict.push(y);
           continue;
         }
         mark[y] = kNotInConflict;
-        s.rejected.push_back(y);
+        rejected.push(y);
       }
-      s.boundary.push_back({x, i});
+      boundary.push({x, i});
     }
   }
 }
@@ -513,36 +590,54 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
 // vertex opposite the facet (p sees the facet from the same side), so it is positively oriented
 // and its facet index toward the outside is unchanged. The new cells are glued to each other
 // along the boundary edges: the new facet through p and boundary edge (a, b), oriented as seen
-// from its cell, reads (p, a, b) in one cell and (p, b, a) in the other, so a hash of directed
-// edges pairs them in one pass.
+// from its cell, reads (p, a, b) in one cell and (p, b, a) in the other. The boundary vertices
+// are numbered 1..m (the infinite vertex 0) and a first pass files every new facet under its
+// directed edge in an (m+1)^2 table; a second pass reads the reversed edge. No search, no
+// branch on "found" (Marot, Pellerin & Remacle, "One machine, one minute, three billion
+// tetrahedra", IJNME 117, 2019, use the same idea).
 void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
   Scratch& s = scratch();
 
+  // All new cells first (one per boundary facet), so that no reallocation moves cells_ below.
+  const std::size_t nb = s.boundary.size();
+  s.created.resize(nb);
+  for (std::size_t t = 0; t < nb; ++t) s.created[t] = new_cell();
+  Cell* const cells = cells_.data();
+  CellId* const point_cell = point_cell_.data();
+  const Facet* const boundary = s.boundary.data();
+  const CellId* const created = s.created.data();
+
+  // Number the boundary vertices 1..m-1 (the infinite vertex is 0: it reads local[np], which is
+  // always 0); each vertex gets, as incident cell, the first new cell it is seen in (its old
+  // cells may all be destroyed).
+  const std::size_t np = points_.size();
+  if (s.local_id.size() < np + 1) s.local_id.resize(np + 1, 0);
+  std::uint32_t* const local = s.local_id.data();
+  auto slot = [np](PointId v) -> std::size_t { return v == kInfiniteVertex ? np : v; };
+  s.boundary_vertices.clear();
+  for (std::size_t t = 0; t < nb; ++t) {
+    const Cell& old = cells[boundary[t].cell];
+    for (const int k : kFacetSlots[boundary[t].index]) {
+      const PointId v = old.v[k];
+      if (v != kInfiniteVertex && local[v] == 0) {
+        s.boundary_vertices.push_back(v);
+        local[v] = static_cast<std::uint32_t>(s.boundary_vertices.size());
+        point_cell[v] = created[t];
+      }
+    }
+  }
   // Vertices all of whose cells are in conflict (none on the cavity boundary) become redundant.
   // Only weights can cause that (unweighted points are never redundant, duplicates aside), so
-  // unweighted inputs skip the marking.
+  // unweighted inputs skip the search.
+  constexpr std::uint32_t kInteriorVertex = 0xFFFFFFFFu;
   s.interior.clear();
-  if (weighted_) {
-    if (s.point_mark.size() < points_.size()) s.point_mark.resize(points_.size(), 0);
-    std::uint8_t* mark = s.point_mark.data();
-    for (const Facet& f : s.boundary)
-      for (const int k : kFacetSlots[f.index]) {
-        const PointId v = cells_[f.cell].v[k];
-        if (v != kInfiniteVertex) mark[v] = kOnBoundary;
-      }
+  if (weighted_)
     for (const CellId x : s.conflict)
-      for (const PointId v : cells_[x].v)
-        if (v != kInfiniteVertex && mark[v] == 0) {
-          mark[v] = kInterior;
+      for (const PointId v : cells[x].v)
+        if (v != kInfiniteVertex && local[v] == 0) {
+          local[v] = kInteriorVertex;
           s.interior.push_back(v);
         }
-    for (const Facet& f : s.boundary)
-      for (const int k : kFacetSlots[f.index]) {
-        const PointId v = cells_[f.cell].v[k];
-        if (v != kInfiniteVertex) mark[v] = 0;
-      }
-    for (const PointId v : s.interior) mark[v] = 0;
-  }
 
   // Hidden points of the doomed cells, taken before their slots are recycled.
   s.relocate.clear();
@@ -552,43 +647,56 @@ void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
       cell_hidden_[x] = kNoPoint;
     }
 
-  // The star of p.
-  s.created.clear();
-  s.edges.reset(2 * s.boundary.size() + 8);
-  for (const Facet& f : s.boundary) {
-    const Cell old = cells_[f.cell];
-    const int i = f.index;
-    const CellId n = new_cell();
-    Cell& cell = cells_[n];
+  // Pass 1: the star of p, glued to the outside; every inner facet filed under its edge.
+  const std::size_t m = s.boundary_vertices.size() + 1;
+  const bool direct = m <= kDirectEdgeTable;
+  if (direct) {
+    if (s.edge_table.size() < m * m) s.edge_table.resize(m * m);
+  } else {
+    s.edges.reset(2 * nb);
+  }
+  std::uint32_t* const table = s.edge_table.data();
+  point_cell[id] = created[0];
+  std::size_t infinite_created = 0;
+  for (std::size_t t = 0; t < nb; ++t) {
+    const Cell& old = cells[boundary[t].cell];
+    const int i = boundary[t].index;
+    const CellId n = created[t];
+    Cell& cell = cells[n];
     cell.v = old.v;
     cell.v[i] = id;
-    cell.n[i] = old.n[i];
-    cells_[old.n[i] >> 2].n[old.n[i] & 3u] = make_link(n, i);
-    for (int j = 0; j < 4; ++j) {
-      if (j == i) continue;
-      const PointId a = cell.v[kEdgeAfterApex[i][j][0]];
-      const PointId b = cell.v[kEdgeAfterApex[i][j][1]];
-      if (const std::uint32_t* other = s.edges.find(edge_key(b, a))) {
-        cell.n[j] = *other;
-        cells_[*other >> 2].n[*other & 3u] = make_link(n, j);
-      } else {
-        s.edges.insert(edge_key(a, b), make_link(n, j));
-      }
+    const std::uint32_t outer = old.n[i];
+    cell.n[i] = outer;
+    cells[outer >> 2].n[outer & 3u] = make_link(n, i);
+    if (has_infinite_vertex(cell.v)) {
+      infinite_cell_ = n;
+      ++infinite_created;
     }
-    for (const PointId v : cell.v) {
-      if (v == kInfiniteVertex) {
-        infinite_cell_ = n;
-        ++infinite_cell_count_;
-      } else {
-        point_cell_[v] = n;
-      }
+    for (const auto& [j, ka, kb] : kInnerFacets[i]) {
+      const std::size_t a = local[slot(cell.v[ka])], b = local[slot(cell.v[kb])];
+      if (direct)
+        table[a * m + b] = make_link(n, j);
+      else
+        s.edges.insert(edge_key(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)),
+                       make_link(n, j));
     }
-    s.created.push_back(n);
   }
+  infinite_cell_count_ += infinite_created;
+  // Pass 2: each inner facet meets the facet filed under the reversed edge.
+  for (std::size_t t = 0; t < nb; ++t) {
+    Cell& cell = cells[created[t]];
+    for (const auto& [j, ka, kb] : kInnerFacets[boundary[t].index]) {
+      const std::size_t a = local[slot(cell.v[ka])], b = local[slot(cell.v[kb])];
+      cell.n[j] = direct ? table[b * m + a]
+                         : *s.edges.find(edge_key(static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a)));
+    }
+  }
+  for (const PointId v : s.boundary_vertices) local[v] = 0;
+  for (const PointId v : s.interior) local[v] = 0;
 
   std::uint8_t* mark = s.cell_mark.data();
   for (const CellId x : s.conflict) {
-    if (is_infinite(x)) --infinite_cell_count_;
+    if (has_infinite_vertex(cells_[x].v)) --infinite_cell_count_;
     free_cell(x);
     mark[x] = 0;
   }

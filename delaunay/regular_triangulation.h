@@ -32,9 +32,9 @@
 // the first tetrahedron is built and the pending points are inserted. A set that stays coplanar
 // forever is therefore reported with dimension() < 3, its points pending and no cells.
 //
-// Identity. Every inserted point gets a PointId: the number of points inserted before it (batch
-// points are numbered in the order given, whatever order they are inserted in). A vertex is named
-// by its PointId. A PointId keeps its meaning forever; a removed point's id is not reused.
+// Identity. Every inserted point gets a PointId: the number of points inserted before it (a batch
+// is inserted, hence numbered, in spatial order; insert() reports each input's id). A vertex is
+// named by its PointId. A PointId keeps its meaning forever; a removed point's id is not reused.
 //
 // Memory. Flat arrays with 32-bit indices: a cell is 4 vertex ids + 4 neighbour links (32 bytes);
 // a neighbour link (cell << 2 | j) also gives the index j of the facet as seen from the neighbour,
@@ -137,10 +137,13 @@ class RegularTriangulation {
   /// walk), O(size of the conflict region) otherwise.
   PointId insert(const WeightedPoint& p, ChangeSet* changes = nullptr, CellId hint = kNoCell);
 
-  /// Inserts a batch in BRIO + Hilbert order (spatial_sort.h). The points get the consecutive ids
-  /// first, first + 1, ... in the order given, where first = number_of_points() before the call;
-  /// returns first. No change report (a mesher inserting one point at a time uses insert()).
-  PointId insert(std::span<const WeightedPoint> points);
+  /// Inserts a batch in BRIO + Hilbert order (spatial_sort.h). The points are stored, and
+  /// numbered, in that order: they get the ids first, first + 1, ..., first + n - 1 (first =
+  /// number_of_points() before the call, which is returned), and `ids`, if given, receives for
+  /// each k the PointId of points[k]. Storing them in spatial order is what makes the insertion
+  /// fast: a cell's vertices are then close in memory. No change report (a mesher inserting one
+  /// point at a time uses insert()). Expected O(n log n).
+  PointId insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids = nullptr);
 
   /// Removes a point: a vertex (its star is re-triangulated and the points it hid come back where
   /// they should), a hidden point (simply forgotten) or a pending point. Returns false and leaves
@@ -281,6 +284,7 @@ class RegularTriangulation {
   void detach_hidden(PointId id);
   void enable_hidden_storage();
   CellId new_cell();
+  CellId append_cell();
   void free_cell(CellId c);
   void collect_star(PointId v, std::vector<CellId>& star);
   bool remove_vertex(PointId v, ChangeSet* changes, std::string* error);

@@ -25,6 +25,18 @@ inline constexpr std::array<std::array<std::array<int, 2>, 4>, 4> kEdgeAfterApex
   return t;
 }();
 
+/// For apex slot i: its three inner facets j != i with their edge slots (k, l) as in
+/// kEdgeAfterApex, flattened: kInnerFacets[i][t] = {j, k, l}.
+inline constexpr std::array<std::array<std::array<int, 3>, 3>, 4> kInnerFacets = [] {
+  std::array<std::array<std::array<int, 3>, 3>, 4> t{};
+  for (int i = 0; i < 4; ++i) {
+    int n = 0;
+    for (int j = 0; j < 4; ++j)
+      if (j != i) t[i][n++] = {j, kEdgeAfterApex[i][j][0], kEdgeAfterApex[i][j][1]};
+  }
+  return t;
+}();
+
 /// Neighbour link: neighbour cell << 2 | index of the shared facet in the neighbour.
 inline constexpr std::uint32_t make_link(std::uint32_t cell, int facet) {
   return (cell << 2) | static_cast<std::uint32_t>(facet);

@@ -51,13 +51,22 @@ void check_orders(std::vector<WeightedPoint> pts, test::Rng& rng, const char* wh
   std::vector<WeightedPoint> shuffled(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) shuffled[i] = pts[perm[i]];
   check_against_brute_force(shuffled, what);
+  // A batch is stored in its insertion order: name its points by their input index.
   RegularTriangulation batch;
-  batch.insert(pts);
+  std::vector<delaunay::PointId> ids;
+  batch.insert(pts, &ids);
   std::string why;
   CHECK_MESSAGE(batch.is_valid(&why), why);
+  std::vector<std::uint32_t> names(pts.size());
+  for (std::uint32_t k = 0; k < pts.size(); ++k) {
+    CHECK(batch.point(ids[k]) == pts[k]);
+    names[ids[k]] = k;
+  }
   RegularTriangulation one;
   for (const auto& p : pts) one.insert(p);
-  CHECK(test::finite_cell_quads(batch) == test::finite_cell_quads(one));
+  CHECK(test::finite_cell_quads(batch, names) == test::finite_cell_quads(one));
+  CHECK(test::points_with_status(batch, PointStatus::hidden, names) ==
+        test::points_with_status(one, PointStatus::hidden));
 }
 
 }  // namespace
