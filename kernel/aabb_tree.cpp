@@ -17,23 +17,27 @@ Box3 triangle_box(const std::array<Vec3, 3>& t) {
   return b;
 }
 
-// Conservative test whether the line piece {a + t (b - a), t in [0, t_max]} meets the closed box.
-// Slab method (Kay & Kajiya); the parameters t = (lo_i - a_i) / (b_i - a_i) are computed with
-// three roundings (the two subtractions and the division), so each differs from the exact
-// parameter by at most 3 eps |t| (1 + O(eps)). Widening every entry parameter by 8 eps |t|
-// downwards and every exit parameter by 8 eps |t| upwards makes the computed interval contain the
-// exact one: the test may accept a box the exact piece misses by a hair (harmless: the exact
-// triangle test follows), never reject one it meets. Axes with b_i == a_i are decided exactly.
-// (Cf. Ize, "Robust BVH ray traversal", JCGT 2(2), 2013, which widens by 2 gamma_3 the same way.)
-bool segment_may_hit_box(const Vec3& a, const Vec3& d, double t_max, const Box3& box) {
+// Conservative test whether the line piece {a + t d, t in [0, t_max]} meets the closed box.
+// Slab method (Kay & Kajiya) with inv_d = 1 / d precomputed per query; the parameters
+// t = (lo_i - a_i) * inv_d_i carry three roundings (d_i = b_i - a_i, its reciprocal, and the
+// subtraction and product - the product and subtraction each one, the reciprocal of a rounded
+// d_i one more), so each differs from the exact parameter (lo_i - a_i) / (b_i - a_i) by at most
+// 4 eps |t| (1 + O(eps)). Widening every entry parameter by 8 eps |t| downwards and every exit
+// parameter by 8 eps |t| upwards makes the computed interval contain the exact one: the test may
+// accept a box the exact piece misses by a hair (harmless: the exact triangle test follows),
+// never reject one it meets. Axes with d_i == 0 are decided exactly; a NaN from 0 * inf (d_i so
+// small that its reciprocal overflows, a_i on the slab's plane) is ignored by max/min, which
+// only widens the interval. (Cf. Ize, "Robust BVH ray traversal", JCGT 2(2), 2013, which widens
+// by 2 gamma_3 the same way.)
+bool segment_may_hit_box(const Vec3& a, const Vec3& d, const Vec3& inv_d, double t_max, const Box3& box) {
   double t_lo = 0, t_hi = t_max;
   for (int i = 0; i < 3; ++i) {
     if (d[i] == 0) {
       if (a[i] < box.lo[i] || a[i] > box.hi[i]) return false;
       continue;
     }
-    double t0 = (box.lo[i] - a[i]) / d[i];
-    double t1 = (box.hi[i] - a[i]) / d[i];
+    double t0 = (box.lo[i] - a[i]) * inv_d[i];
+    double t1 = (box.hi[i] - a[i]) * inv_d[i];
     if (t0 > t1) std::swap(t0, t1);
     t0 -= 8 * kEps * std::abs(t0);
     t1 += 8 * kEps * std::abs(t1);
@@ -42,6 +46,18 @@ bool segment_may_hit_box(const Vec3& a, const Vec3& d, double t_max, const Box3&
     if (t_lo > t_hi) return false;
   }
   return true;
+}
+
+// Single-precision bounds that contain [lo, hi]: each double rounded to a float, moved one float
+// further out when the rounding went inwards.
+void store_box(const Box3& b, std::array<float, 3>& lo, std::array<float, 3>& hi) {
+  for (int i = 0; i < 3; ++i) {
+    float l = static_cast<float>(b.lo[i]), h = static_cast<float>(b.hi[i]);
+    if (static_cast<double>(l) > b.lo[i]) l = std::nextafter(l, -std::numeric_limits<float>::infinity());
+    if (static_cast<double>(h) < b.hi[i]) h = std::nextafter(h, std::numeric_limits<float>::infinity());
+    lo[i] = l;
+    hi[i] = h;
+  }
 }
 
 // Depth of a median-split tree is below 40 for any 32-bit triangle count; 64 is ample.
@@ -53,54 +69,56 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
                    std::span<const std::array<std::uint32_t, 3>> triangles) {
   const auto n = static_cast<std::uint32_t>(triangles.size());
   if (n == 0) return;
-  std::vector<std::array<Vec3, 3>> corners(n);
-  std::vector<Vec3> centroids(n);
-  std::vector<std::uint32_t> order(n);
+  std::vector<BuildItem> items(n);
   for (std::uint32_t t = 0; t < n; ++t) {
     const auto& tri = triangles[t];
-    corners[t] = {vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]};
-    centroids[t] = (corners[t][0] + corners[t][1] + corners[t][2]) / 3.0;
-    order[t] = t;
+    items[t] = {(vertices[tri[0]] + vertices[tri[1]] + vertices[tri[2]]) / 3.0, t};
   }
   nodes_.reserve(2 * (n / kLeafSize) + 2);
-  build_node(order, centroids, 0, n, corners);
-  // Store the triangles in leaf order so a leaf reads one contiguous block.
-  corners_.resize(n);
-  triangle_ids_ = order;
-  for (std::uint32_t slot = 0; slot < n; ++slot) corners_[slot] = corners[order[slot]];
+  // Leaves copy their triangles' corners as they are made, so the corner array ends up in leaf
+  // order and a leaf reads one contiguous block.
+  corners_.reserve(n);
+  triangle_ids_.reserve(n);
+  bounds_ = build_node(items, 0, n, vertices, triangles);
 }
 
-std::uint32_t AabbTree::build_node(std::vector<std::uint32_t>& order, std::vector<Vec3>& centroids,
-                                   std::uint32_t begin, std::uint32_t end,
-                                   std::span<const std::array<Vec3, 3>> corners) {
+Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end,
+                          std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   nodes_.push_back({});
-  Box3 box, centroid_box;
-  for (std::uint32_t k = begin; k < end; ++k) {
-    box.extend(triangle_box(corners[order[k]]));
-    centroid_box.extend(centroids[order[k]]);
-  }
-  nodes_[index].box = box;
   if (end - begin <= kLeafSize) {
-    nodes_[index].first_or_right = begin;
+    Box3 box;
+    nodes_[index].first_or_right = static_cast<std::uint32_t>(corners_.size());
     nodes_[index].count = end - begin;
-    return index;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const auto& tri = triangles[items[k].id];
+      corners_.push_back({vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]});
+      triangle_ids_.push_back(items[k].id);
+      box.extend(triangle_box(corners_.back()));
+    }
+    store_box(box, nodes_[index].lo, nodes_[index].hi);
+    return box;
   }
   // Median split on the longest axis of the centroids' box: balanced whatever the distribution
   // (an SAH split gives faster queries on very uneven meshes; the input meshes here are fairly
   // uniform and the balanced depth bound keeps the traversal stack fixed-size).
+  Box3 centroid_box;
+  for (std::uint32_t k = begin; k < end; ++k) centroid_box.extend(items[k].centroid);
   int axis = 0;
   const Vec3 extent = centroid_box.hi - centroid_box.lo;
   if (extent.y() > extent[axis]) axis = 1;
   if (extent.z() > extent[axis]) axis = 2;
   const std::uint32_t mid = begin + (end - begin) / 2;
-  std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                   [&](std::uint32_t p, std::uint32_t q) { return centroids[p][axis] < centroids[q][axis]; });
-  build_node(order, centroids, begin, mid, corners);
-  const std::uint32_t right = build_node(order, centroids, mid, end, corners);
+  std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                   [axis](const BuildItem& p, const BuildItem& q) { return p.centroid[axis] < q.centroid[axis]; });
+  // Boxes bottom-up: O(1) per inner node instead of a pass over its triangles.
+  Box3 box = build_node(items, begin, mid, vertices, triangles);
+  const auto right = static_cast<std::uint32_t>(nodes_.size());
+  box.extend(build_node(items, mid, end, vertices, triangles));
+  store_box(box, nodes_[index].lo, nodes_[index].hi);
   nodes_[index].first_or_right = right;
   nodes_[index].count = 0;
-  return index;
+  return box;
 }
 
 int AabbTree::depth() const {
@@ -124,13 +142,14 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
                               std::vector<TriangleIntersection>& out) const {
   if (nodes_.empty()) return;
   const Vec3 d = b - a;
+  const Vec3 inv_d = d.cwiseInverse();
   const double t_max = is_ray ? std::numeric_limits<double>::infinity() : 1.0;
   std::array<std::uint32_t, kStackSize> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!segment_may_hit_box(a, d, t_max, node.box)) continue;
+    if (!segment_may_hit_box(a, d, inv_d, t_max, node.box())) continue;
     if (node.count == 0) {
       const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
       stack[top++] = node.first_or_right;
@@ -139,6 +158,8 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
       const auto& t = corners_[slot];
+      // The triangle's own box first: a few flops that spare most exact tests in the leaf.
+      if (!segment_may_hit_box(a, d, inv_d, t_max, triangle_box(t))) continue;
       const TriangleHit hit = is_ray ? intersect_ray_triangle(a, ray_direction, t[0], t[1], t[2])
                                      : intersect_segment_triangle(a, b, t[0], t[1], t[2]);
       if (hit) out.push_back({triangle_ids_[slot], hit});
@@ -162,20 +183,20 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
   if (nodes_.empty()) return std::nullopt;
   ClosestTriangle best;
   best.squared_distance = std::numeric_limits<double>::infinity();
-  // Depth first, nearer child first, pruned by the box distance. Boxes are exact bounds of their
-  // triangles, and the box distance is a lower bound up to rounding (a relative few eps), so a
-  // pruned box could hide a triangle at most a few ulps closer than the best: harmless.
+  // Depth first, nearer child first, pruned by the box distance. Boxes contain their triangles,
+  // and the box distance is a lower bound up to rounding (a relative few eps), so a pruned box
+  // could hide a triangle at most a few ulps closer than the best: harmless.
   std::array<std::pair<std::uint32_t, double>, kStackSize> stack;
   int top = 0;
-  stack[top++] = {0, nodes_[0].box.squared_distance(p)};
+  stack[top++] = {0, nodes_[0].box().squared_distance(p)};
   while (top > 0) {
     const auto [i, box_distance] = stack[--top];
     if (box_distance > best.squared_distance) continue;
     const Node& node = nodes_[i];
     if (node.count == 0) {
       const std::uint32_t left = i + 1, right = node.first_or_right;
-      const double dl = nodes_[left].box.squared_distance(p);
-      const double dr = nodes_[right].box.squared_distance(p);
+      const double dl = nodes_[left].box().squared_distance(p);
+      const double dr = nodes_[right].box().squared_distance(p);
       // Push the farther first so the nearer is explored first.
       if (dl <= dr) {
         stack[top++] = {right, dr};
@@ -204,7 +225,7 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
   while (top > 0) {
     const std::uint32_t i = stack[--top];
     const Node& node = nodes_[i];
-    if (!node.box.overlaps(box)) continue;
+    if (!node.box().overlaps(box)) continue;
     if (node.count == 0) {
       stack[top++] = node.first_or_right;
       stack[top++] = i + 1;
