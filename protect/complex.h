@@ -30,10 +30,9 @@
 // so d(x, y) + d(y, x) = length; the shorter way is min(d(x, y), d(y, x)).
 //
 // Storage is flat: every per-element list is a CSR pair (offsets of size count + 1, values).
-// Complexity of build_complex: O(T + V log V) time for T triangles and V vertices (O(T) edge
-// table by bucketing on the smaller vertex; the weld sorts the vertices), plus O(D T) for D
-// zero-area triangles needing a flip (each round scans the triangles once). Memory about 150
-// bytes per triangle.
+// Complexity of build_complex: O(T + V) expected time for T triangles and V vertices (O(T) edge
+// table by bucketing on the smaller vertex, hashed weld), plus one O(T) scan per cap-healing
+// round (at most 16) when the soup has zero-area caps. Memory about 150 bytes per triangle.
 #pragma once
 
 #include <array>

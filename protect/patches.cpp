@@ -43,49 +43,36 @@ VertexFans find_patches(Complex& complex) {
     for (std::uint32_t t = 0; t < n_tris; ++t) complex.patch_triangles[fill[complex.triangle_patch[t]]++] = t;
   }
 
-  // Fans around each vertex. The corners (t, k) at a vertex are grouped with a local union-find:
-  // two corners are joined when their triangles share an edge at the vertex - any edge for
-  // sheets, a non-feature edge for wedges.
-  VertexFans fans;
-  const auto n_vertices = static_cast<std::uint32_t>(complex.vertices.size());
-  std::vector<std::uint32_t> vcount(n_vertices, 0);
-  for (const auto& t : complex.triangles)
-    for (auto v : t) ++vcount[v];
-  const std::vector<std::uint32_t> vstart = offsets_from_counts(vcount);
-  std::vector<std::uint32_t> vcorners(3 * static_cast<std::size_t>(n_tris));
-  {
-    std::vector<std::uint32_t> fill(vstart.begin(), vstart.end() - 1);
-    for (std::uint32_t t = 0; t < n_tris; ++t)
-      for (std::uint32_t k = 0; k < 3; ++k) vcorners[fill[complex.triangles[t][k]]++] = 3 * t + k;
+  // Fans around each vertex, with one union-find over all triangle corners (t, k), index
+  // 3 t + k: the corners of the triangles along an edge are joined at each end of the edge -
+  // along any edge for sheets, along a non-feature edge for wedges. A set never leaves its
+  // vertex, and a set's representative is its smallest corner.
+  const auto n_corners = 3 * static_cast<std::size_t>(n_tris);
+  UnionFind sheets(n_corners), wedges(n_corners);
+  auto corner_at = [&](std::uint32_t t, std::uint32_t v) {
+    const auto& tri = complex.triangles[t];
+    return 3 * t + (tri[0] == v ? 0u : tri[1] == v ? 1u : 2u);
+  };
+  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+    const auto faces = complex.edge_triangle_ids(e);
+    const bool smooth = complex.edge_feature[e] == 0;
+    for (const std::uint32_t v : complex.edges[e]) {
+      const std::uint32_t first = corner_at(faces[0], v);
+      for (std::size_t i = 1; i < faces.size(); ++i) {
+        const std::uint32_t other = corner_at(faces[i], v);
+        sheets.unite(first, other);
+        if (smooth) wedges.unite(first, other);
+      }
+    }
   }
-  fans.corner_wedge.assign(3 * static_cast<std::size_t>(n_tris), kNoIndex);
-  fans.vertex_sheets.assign(n_vertices, 0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> by_edge;  // (edge, local corner)
-  std::vector<std::uint32_t> local_id;
-  for (std::uint32_t v = 0; v < n_vertices; ++v) {
-    const std::uint32_t first = vstart[v], n = vstart[v + 1] - first;
-    if (n == 0) continue;
-    by_edge.clear();
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const std::uint32_t c = vcorners[first + i], t = c / 3, k = c % 3;
-      by_edge.push_back({complex.triangle_edges[t][(k + 1) % 3], i});
-      by_edge.push_back({complex.triangle_edges[t][(k + 2) % 3], i});
-    }
-    std::sort(by_edge.begin(), by_edge.end());
-    UnionFind sheets(n), wedges(n);
-    std::uint32_t sheet_count = n;
-    for (std::size_t j = 1; j < by_edge.size(); ++j) {
-      if (by_edge[j].first != by_edge[j - 1].first) continue;
-      if (sheets.unite(by_edge[j - 1].second, by_edge[j].second)) --sheet_count;
-      if (complex.edge_feature[by_edge[j].first] == 0) wedges.unite(by_edge[j - 1].second, by_edge[j].second);
-    }
-    fans.vertex_sheets[v] = sheet_count;
-    local_id.assign(n, kNoIndex);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const std::uint32_t root = wedges.find(i);
-      if (local_id[root] == kNoIndex) local_id[root] = fans.wedge_count++;
-      fans.corner_wedge[vcorners[first + i]] = local_id[root];
-    }
+  VertexFans fans;
+  fans.vertex_sheets.assign(complex.vertices.size(), 0);
+  fans.corner_wedge.assign(n_corners, kNoIndex);
+  for (std::uint32_t c = 0; c < n_corners; ++c) {
+    if (sheets.find(c) == c) ++fans.vertex_sheets[complex.triangles[c / 3][c % 3]];
+    const std::uint32_t root = wedges.find(c);
+    // Roots are the smallest corner of their set, so they are numbered before their members.
+    fans.corner_wedge[c] = root == c ? fans.wedge_count++ : fans.corner_wedge[root];
   }
   return fans;
 }

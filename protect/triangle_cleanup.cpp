@@ -2,7 +2,7 @@
 // without opening fake boundaries (see complex.h).
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -20,27 +20,36 @@ std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
 }
 
-// Canonical index of each vertex: the smallest index with exactly the same coordinates.
+// Canonical index of each vertex: the smallest index with exactly the same coordinates (-0 and
+// +0 equal). Open addressing with linear probing on the coordinates' bits, table at most half
+// full: O(V) expected, several times faster than sorting at a million vertices.
 std::vector<std::uint32_t> weld(const std::vector<Vec3>& vertices, std::size_t& welded) {
   const auto n = static_cast<std::uint32_t>(vertices.size());
-  std::vector<std::uint32_t> order(n), canonical(n);
-  std::iota(order.begin(), order.end(), 0u);
-  auto less = [&](std::uint32_t a, std::uint32_t b) {
-    const Vec3 &p = vertices[a], &q = vertices[b];
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
+  std::vector<std::uint32_t> canonical(n);
+  std::size_t slots = 16;
+  while (slots < 2 * static_cast<std::size_t>(n)) slots *= 2;
+  std::vector<std::uint32_t> table(slots, kNoIndex);
+  auto hash = [](const Vec3& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int i = 0; i < 3; ++i) {
+      const double x = p[i] + 0.0;  // -0 + 0 = +0
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return h;
   };
-  std::sort(order.begin(), order.end(), less);
   welded = 0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t v = order[i];
-    if (i > 0 && vertices[order[i - 1]] == vertices[v]) {
-      canonical[v] = canonical[order[i - 1]];
-      ++welded;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    std::size_t slot = hash(vertices[v]) & (slots - 1);
+    while (table[slot] != kNoIndex && vertices[table[slot]] != vertices[v]) slot = (slot + 1) & (slots - 1);
+    if (table[slot] == kNoIndex) {
+      table[slot] = v;
+      canonical[v] = v;
     } else {
-      canonical[v] = v;  // the first of an equal run has the smallest index (ties sorted by index)
+      canonical[v] = table[slot];
+      ++welded;
     }
   }
   return canonical;
