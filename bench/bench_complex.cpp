@@ -1,0 +1,112 @@
+// Building the piecewise smooth complex of a large mesh, building the AABB tree, and the
+// segment queries the mesher makes (Voronoi edges: short segments near the surface).
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <random>
+
+#include <delpsc/io/shapes.h>
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/protect/complex.h>
+#include <delpsc/refine/polygon_domain.h>
+
+using namespace delpsc;
+
+namespace {
+
+// A torus with 2 nu nv triangles (no features) and a box with n x n quads per face (features
+// on 12 edges): two ends of the work the feature step does.
+const io::TriangleSoup& torus_soup(int nu, int nv) {
+  static std::map<std::pair<int, int>, io::TriangleSoup> cache;
+  auto& s = cache[{nu, nv}];
+  if (s.triangles.empty()) s = io::make_torus(1, 0.3, nu, nv);
+  return s;
+}
+
+void BM_BuildComplexTorus(benchmark::State& state) {
+  const auto nu = static_cast<int>(state.range(0));
+  const auto& soup = torus_soup(nu, nu / 2);
+  for (auto _ : state) benchmark::DoNotOptimize(protect::build_complex(soup));
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+  state.counters["tri/s"] = benchmark::Counter(static_cast<double>(soup.triangles.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_BuildComplexTorus)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void BM_BuildComplexCube(benchmark::State& state) {
+  const auto soup = io::make_cube(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(protect::build_complex(soup));
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+}
+BENCHMARK(BM_BuildComplexCube)->Arg(290)->Unit(benchmark::kMillisecond);
+
+void BM_BuildAabbTree(benchmark::State& state) {
+  const auto nu = static_cast<int>(state.range(0));
+  const auto& soup = torus_soup(nu, nu / 2);
+  for (auto _ : state) benchmark::DoNotOptimize(kernel::AabbTree(soup.vertices, soup.triangles));
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+}
+BENCHMARK(BM_BuildAabbTree)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// Segments of length `len` (relative to the torus's tube radius 0.3) centred on random points of
+// random triangles, in random directions: the shape of Voronoi edges dual to restricted
+// triangles (generic: they do not pass exactly through mesh vertices, which would send every
+// test to the exact arithmetic).
+void segment_queries(benchmark::State& state, bool through_domain) {
+  const auto nu = static_cast<int>(state.range(0));
+  const double len = 0.3 * static_cast<double>(state.range(1)) / 100;
+  const auto& soup = torus_soup(nu, nu / 2);
+  const refine::PolygonDomain domain(soup);
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> g;
+  std::vector<std::pair<Vec3, Vec3>> segments(4096);
+  for (auto& [a, b] : segments) {
+    const auto& t = soup.triangles[rng() % soup.triangles.size()];
+    std::uniform_real_distribution<double> u(0, 1);
+    double x = u(rng), y = u(rng);
+    if (x + y > 1) x = 1 - x, y = 1 - y;
+    const Vec3 c = soup.vertices[t[0]] + x * (soup.vertices[t[1]] - soup.vertices[t[0]]) +
+                   y * (soup.vertices[t[2]] - soup.vertices[t[0]]);
+    const Vec3 d = Vec3(g(rng), g(rng), g(rng)).normalized() * (len / 2);
+    a = c - d;
+    b = c + d;
+  }
+  std::vector<kernel::TriangleIntersection> raw;
+  std::vector<refine::SurfaceHit> hits;
+  std::size_t i = 0, found = 0;
+  for (auto _ : state) {
+    const auto& [a, b] = segments[i++ % segments.size()];
+    if (through_domain) {
+      domain.intersect_segment(a, b, hits);
+      found += hits.size();
+    } else {
+      raw.clear();
+      domain.tree().intersect_segment(a, b, raw);
+      found += raw.size();
+    }
+  }
+  state.counters["hits/query"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+}
+
+void BM_AabbSegmentQuery(benchmark::State& state) { segment_queries(state, false); }
+void BM_DomainIntersectSegment(benchmark::State& state) { segment_queries(state, true); }
+// Args: torus resolution nu, segment length in percent of the tube radius.
+BENCHMARK(BM_AabbSegmentQuery)->Args({1000, 10})->Args({1000, 100})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DomainIntersectSegment)->Args({1000, 10})->Args({1000, 100})->Unit(benchmark::kMicrosecond);
+
+void BM_SegmentInBall(benchmark::State& state) {
+  const auto c = protect::build_complex(io::make_capped_cylinder(1, 1, static_cast<int>(state.range(0)), 2, 2));
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  double sum = 0;
+  for (auto _ : state) {
+    const auto seg = c.segment_in_ball(0, u(rng) * c.curves[0].length, 0.05);
+    sum += seg.s1 - seg.s0;
+  }
+  benchmark::DoNotOptimize(sum);
+}
+BENCHMARK(BM_SegmentInBall)->Arg(1000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
