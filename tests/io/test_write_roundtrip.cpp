@@ -4,6 +4,7 @@
 
 #include <delpsc/io/mesh_writer.h>
 #include <delpsc/io/read_model.h>
+#include <delpsc/io/shapes.h>
 
 #include "support/model_files.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 /// A torus whose coordinates are awkward for text: thirds, tiny and huge magnitudes, -0.
 io::SurfaceMesh awkward_torus() {
-  io::SurfaceMesh m = io::surface_mesh_from(test::torus(12, 7));
+  io::SurfaceMesh m = io::surface_mesh_from(io::make_torus(2, 0.75, 12, 8));
   for (std::size_t i = 0; i < m.vertices.size(); ++i) {
     Vec3& p = m.vertices[i];
     p = p / 3.0 * (i % 3 == 0 ? 1e-30 : i % 3 == 1 ? 1e30 : 1.0);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <numbers>
 #include <sstream>
 
 namespace delpsc::test {
@@ -58,25 +57,6 @@ std::vector<CornerTriangle> canonical_triangles(const io::TriangleSoup& soup) {
 
 std::vector<CornerTriangle> canonical_triangles_as_float(const io::TriangleSoup& soup) {
   return canonical(soup, [](double x) { return static_cast<double>(static_cast<float>(x)); });
-}
-
-io::TriangleSoup torus(int n, int m, double R, double r) {
-  io::TriangleSoup soup;
-  const double two_pi = 2 * std::numbers::pi;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) {
-      const double u = two_pi * i / n, v = two_pi * j / m;
-      soup.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u),
-                                 (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-    }
-  const auto id = [&](int i, int j) { return static_cast<std::uint32_t>((i % n) * m + (j % m)); };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) {
-      // Outward orientation: u then v is counter-clockwise seen from outside.
-      soup.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      soup.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return soup;
 }
 
 }  // namespace delpsc::test

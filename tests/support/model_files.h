@@ -71,8 +71,4 @@ std::vector<CornerTriangle> canonical_triangles(const io::TriangleSoup& soup);
 /// The same, with every coordinate first rounded to float (what binary STL stores).
 std::vector<CornerTriangle> canonical_triangles_as_float(const io::TriangleSoup& soup);
 
-/// A closed, consistently oriented triangulated torus with n x m quads (2nm triangles), radii
-/// R > r; vertex coordinates are computed once, so shared vertices are exactly equal.
-io::TriangleSoup torus(int n, int m, double R = 2.0, double r = 0.75);
-
 }  // namespace delpsc::test
