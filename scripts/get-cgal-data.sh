@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Fetches the polygon models of Debian's libcgal-demo package (fandisk, part, anchor, joint,
+# elephant, ...) into data/cgal-demo/, which is gitignored: the models are CGAL's, not ours, and
+# are only read by tests (tests/protect/test_complex_cgal_models.cpp skips them when absent).
+#
+# Uses `apt-get download` (no root needed, nothing installed) into a temporary directory, then
+# takes data/meshes/*.off out of usr/share/doc/libcgal-dev/data.tar.gz inside the package.
+# Usage: scripts/get-cgal-data.sh [MODEL...]   (default: the models the tests use)
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+dest="$root/data/cgal-demo"
+models=("$@")
+if [ ${#models[@]} -eq 0 ]; then
+  models=(fandisk part anchor joint elephant)
+fi
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp"
+# apt-get download writes into the current directory; _apt may not be able to write to a
+# private temporary directory, which only produces a warning.
+apt-get download libcgal-demo
+deb=$(ls libcgal-demo_*.deb)
+data_member=$(ar t "$deb" | grep '^data\.tar')
+ar x "$deb" "$data_member"
+inner=./usr/share/doc/libcgal-dev/data.tar.gz
+tar xf "$data_member" "$inner"
+
+mkdir -p "$dest"
+for m in "${models[@]}"; do
+  tar xzf "$inner" -O "data/meshes/$m.off" > "$dest/$m.off"
+  echo "data/cgal-demo/$m.off ($(wc -c < "$dest/$m.off") bytes)"
+done
