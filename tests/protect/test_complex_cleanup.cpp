@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 
 #include <delpsc/io/shapes.h>
+#include <delpsc/kernel/predicates.h>
 #include <delpsc/protect/complex.h>
 
 #include "support/complex_checks.h"
@@ -245,4 +247,30 @@ TEST_CASE("bad input is refused with std::invalid_argument") {
   const Complex empty = build_complex(io::TriangleSoup{});
   CHECK(empty.patch_count() == 0);
   CHECK(empty.curve_count() == 0);
+}
+
+TEST_CASE("random soups with every kind of defect build a consistent complex") {
+  // Few vertices on a small integer grid, many random triangles: repeated vertices, exactly
+  // collinear triples (caps), duplicated and oppositely oriented triangles, edges with many
+  // triangles, vertices where sheets touch.
+  std::mt19937_64 rng(2024);
+  for (int round = 0; round < 200; ++round) {
+    io::TriangleSoup s;
+    const int n = 4 + static_cast<int>(rng() % 12);
+    for (int v = 0; v < n; ++v)
+      s.vertices.emplace_back(static_cast<double>(rng() % 3), static_cast<double>(rng() % 3), static_cast<double>(rng() % 2));
+    const int m = 1 + static_cast<int>(rng() % 30);
+    for (int t = 0; t < m; ++t)
+      s.triangles.push_back({static_cast<std::uint32_t>(rng() % n), static_cast<std::uint32_t>(rng() % n),
+                             static_cast<std::uint32_t>(rng() % n)});
+    protect::ComplexOptions o;
+    o.corner_angle_degrees = static_cast<double>(rng() % 200);
+    const Complex c = build_complex(s, o);
+    const auto problems = test::complex_problems(c);
+    for (const auto& p : problems) INFO(p);
+    CHECK(problems.empty());
+    CHECK(c.triangles.size() + c.cleanup.zero_area_triangles.size() == s.triangles.size() + c.cleanup.split_triangles);
+    for (const auto& t : c.triangles)
+      CHECK_FALSE(kernel::collinear(c.vertices[t[0]].data(), c.vertices[t[1]].data(), c.vertices[t[2]].data()));
+  }
 }
