@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/complex.h>
+#include <delpsc/protect/complex_mesh.h>
 
 #include "support/complex_checks.h"
 
@@ -190,4 +192,19 @@ TEST_CASE("generators refuse parameters that would not give the documented model
   CHECK_THROWS_AS(io::make_capped_cylinder(1, 1, 6), std::invalid_argument);
   CHECK_THROWS_AS(io::make_torus(1, 2), std::invalid_argument);
   CHECK_THROWS_AS(io::make_wedge(70), std::invalid_argument);
+}
+
+TEST_CASE("the complex as a labelled surface mesh") {
+  const Complex c = build_complex(io::make_box_with_fin(4));
+  const io::SurfaceMesh m = protect::to_surface_mesh(c);
+  CHECK(m.triangles.size() == c.triangles.size());
+  CHECK(m.triangle_patch.size() == m.triangles.size());
+  CHECK(m.corners.size() == c.corner_count());
+  std::size_t feature_edges = 0;
+  for (auto f : c.edge_feature) feature_edges += f != 0 ? 1 : 0;
+  CHECK(m.edges.size() == feature_edges);
+  std::set<std::int32_t> curves(m.edge_curve.begin(), m.edge_curve.end());
+  CHECK(curves.size() == c.curve_count());
+  std::set<std::int32_t> patches(m.triangle_patch.begin(), m.triangle_patch.end());
+  CHECK(patches.size() == c.patch_count());
 }

@@ -1,0 +1,21 @@
+#include "complex_mesh.h"
+
+namespace delpsc::protect {
+
+io::SurfaceMesh to_surface_mesh(const Complex& complex) {
+  io::SurfaceMesh mesh;
+  mesh.vertices = complex.vertices;
+  mesh.triangles = complex.triangles;
+  mesh.triangle_patch.assign(complex.triangle_patch.begin(), complex.triangle_patch.end());
+  for (std::uint32_t c = 0; c < complex.curve_count(); ++c) {
+    const auto poly = complex.curve_polyline(c);
+    for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
+      mesh.edges.push_back({poly[i], poly[i + 1]});
+      mesh.edge_curve.push_back(static_cast<std::int32_t>(c));
+    }
+  }
+  mesh.corners = complex.corner_vertex;
+  return mesh;
+}
+
+}  // namespace delpsc::protect
