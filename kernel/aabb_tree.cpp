@@ -72,7 +72,8 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
   std::vector<BuildItem> items(n);
   for (std::uint32_t t = 0; t < n; ++t) {
     const auto& tri = triangles[t];
-    items[t] = {(vertices[tri[0]] + vertices[tri[1]] + vertices[tri[2]]) / 3.0, t};
+    const Vec3 c = (vertices[tri[0]] + vertices[tri[1]] + vertices[tri[2]]) / 3.0;
+    items[t] = {{static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z())}, t};
   }
   nodes_.reserve(2 * (n / kLeafSize) + 2);
   // Leaves copy their triangles' corners as they are made, so the corner array ends up in leaf
@@ -102,12 +103,15 @@ Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, st
   // Median split on the longest axis of the centroids' box: balanced whatever the distribution
   // (an SAH split gives faster queries on very uneven meshes; the input meshes here are fairly
   // uniform and the balanced depth bound keeps the traversal stack fixed-size).
-  Box3 centroid_box;
-  for (std::uint32_t k = begin; k < end; ++k) centroid_box.extend(items[k].centroid);
+  std::array<float, 3> lo = items[begin].centroid, hi = lo;
+  for (std::uint32_t k = begin + 1; k < end; ++k)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], items[k].centroid[i]);
+      hi[i] = std::max(hi[i], items[k].centroid[i]);
+    }
   int axis = 0;
-  const Vec3 extent = centroid_box.hi - centroid_box.lo;
-  if (extent.y() > extent[axis]) axis = 1;
-  if (extent.z() > extent[axis]) axis = 2;
+  for (int i = 1; i < 3; ++i)
+    if (hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
                    [axis](const BuildItem& p, const BuildItem& q) { return p.centroid[axis] < q.centroid[axis]; });
