@@ -32,7 +32,8 @@
 // Storage is flat: every per-element list is a CSR pair (offsets of size count + 1, values).
 // Complexity of build_complex: O(T + V) expected time for T triangles and V vertices (O(T) edge
 // table by bucketing on the smaller vertex, hashed weld), plus one O(T) scan per cap-healing
-// round (at most 16) when the soup has zero-area caps. Memory about 150 bytes per triangle.
+// round (at most 16) when the soup has zero-area caps. Memory: about 90 bytes per triangle
+// (85 MB for a 1M-triangle torus, measured), transiently some 50 more while building.
 #pragma once
 
 #include <array>
