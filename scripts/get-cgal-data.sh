@@ -15,6 +15,10 @@ if [ ${#models[@]} -eq 0 ]; then
   models=(fandisk part anchor joint elephant)
 fi
 
+missing=0
+for m in "${models[@]}"; do [ -s "$dest/$m.off" ] || missing=1; done
+if [ "$missing" -eq 0 ]; then exit 0; fi
+
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp"

@@ -1,0 +1,83 @@
+// `delpsc features`: the piecewise smooth complex found in a polygon model (issue 4).
+#include <chrono>
+#include <delpsc/io/mesh_writer.h>
+#include <delpsc/protect/complex.h>
+#include <delpsc/protect/complex_mesh.h>
+#include <stdexcept>
+
+#include "command.h"
+#include "model_input.h"
+
+namespace delpsc::app {
+
+namespace {
+
+struct FeaturesOptions {
+  std::string input;
+  std::string output;
+  double angle = 60;
+  double corner_angle = 60;
+};
+
+int run(const FeaturesOptions& o, const GlobalOptions& g) {
+  if (!o.output.empty() && !io::mesh_format_from_path(o.output))
+    throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .vtu, .mesh, .off, .obj, .ply or .stl)"};
+  const io::ReadResult model = load_model(o.input, g);
+  const auto t0 = std::chrono::steady_clock::now();
+  protect::ComplexOptions options;
+  options.feature_angle_degrees = o.angle;
+  options.corner_angle_degrees = o.corner_angle;
+  protect::Complex complex;
+  try {
+    complex = protect::build_complex(model.soup, options);
+  } catch (const std::invalid_argument& e) {
+    throw Failure{kBadInput, o.input + ": " + e.what()};
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (complex.triangles.empty())
+    throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
+
+  report("triangles", complex.triangles.size());
+  report("zero_area_triangles", complex.cleanup.zero_area_triangles.size());
+  report("corners", complex.corner_vertex.size());
+  report("curves", complex.curves.size());
+  report("closed_curves", complex.closed_curve_count());
+  report("patches", complex.patches.size());
+  report("patches_without_boundary", complex.patches_without_boundary());
+  report("seconds", seconds);
+  if (g.verbosity > 0) {
+    for (std::size_t p = 0; p < complex.patches.size(); ++p)
+      std::fprintf(stderr, "patch %zu: euler=%d boundary_loops=%u\n", p,
+                   complex.patches[p].euler_characteristic, complex.patches[p].boundary_loops);
+  }
+  if (!o.output.empty()) {
+    try {
+      io::write_mesh(o.output, protect::to_surface_mesh(complex));
+    } catch (const io::Error& e) {
+      throw Failure{kBadInput, e.what()};
+    }
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Runner register_features(CLI::App& app) {
+  auto o = std::make_shared<FeaturesOptions>();
+  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL (ASCII or binary) or PLY")->required();
+  app.add_option("--angle", o->angle,
+                 "Feature angle in degrees: an edge whose face normals differ by more is sharp")
+      ->check(CLI::Range(0.0, 180.0));
+  app.add_option("--corner-angle", o->corner_angle,
+                 "A curve turning by more than this many degrees at a vertex gets a corner there")
+      ->check(CLI::Range(0.0, 180.0));
+  app.add_option("-o,--output", o->output,
+                 "Write the complex (patches and curves labelled): .vtu for ParaView, .mesh (Medit)");
+  app.footer(
+      "Prints key=value lines: triangles, zero_area_triangles, corners, curves, closed_curves, "
+      "patches, patches_without_boundary, seconds.\n\nExample:\n"
+      "  delpsc features fandisk.off --angle 60 -o fandisk-features.vtu");
+  return [o](const GlobalOptions& g) { return run(*o, g); };
+}
+
+}  // namespace delpsc::app

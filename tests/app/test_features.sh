@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# delpsc features: counts on a cube written by hand, outputs, and bad input.
+source "$(dirname "$0")/lib.sh"
+
+cat >"$TMP/cube.off" <<'MODEL'
+OFF
+8 12 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+3 0 2 1
+3 0 3 2
+3 4 5 6
+3 4 6 7
+3 0 1 5
+3 0 5 4
+3 1 2 6
+3 1 6 5
+3 2 3 7
+3 2 7 6
+3 3 0 4
+3 3 4 7
+MODEL
+expect 0 "" -- features "$TMP/cube.off" -o "$TMP/cube.vtu"
+[[ "$(value corners)" == "8" ]] || fail "cube corners: $(value corners)"
+[[ "$(value curves)" == "12" ]] || fail "cube curves: $(value curves)"
+[[ "$(value patches)" == "6" ]] || fail "cube patches: $(value patches)"
+grep -q "UnstructuredGrid" "$TMP/cube.vtu" || fail "no VTU written"
+# Above 90 degrees no cube edge is sharp: one closed patch, no curves.
+expect 0 "" -- features "$TMP/cube.off" --angle 95 -o "$TMP/cube.mesh"
+[[ "$(value curves)" == "0" && "$(value patches)" == "1" && "$(value patches_without_boundary)" == "1" ]] \
+  || fail "cube at 95 degrees: curves=$(value curves) patches=$(value patches)"
+grep -q "Triangles" "$TMP/cube.mesh" || fail "no Medit mesh written"
+
+expect 2 "cannot open" -- features "$TMP/missing.off"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' >"$TMP/truncated.off"
+expect 2 "truncated.off" -- features "$TMP/truncated.off"
+printf 'this is not a model' >"$TMP/garbage.stl"
+expect 2 "garbage.stl" -- features "$TMP/garbage.stl"
+expect 2 "" -- features "$TMP/cube.off" --angle 200
+expect 2 "unknown output format" -- features "$TMP/cube.off" -o "$TMP/out.xyz"
+expect 2 "" -- features
+finish

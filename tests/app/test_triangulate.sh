@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# delpsc triangulate: success paths and bad input, run on the built binary.
+source "$(dirname "$0")/lib.sh"
+
+expect 0 "" -- triangulate --generate uniform:2000 --check
+[[ "$(value valid)" == "true" ]] || fail "uniform:2000 not valid"
+[[ "$(value vertices)" == "2000" ]] || fail "uniform:2000 should have 2000 vertices, got $(value vertices)"
+[[ "$(value finite_cells)" -gt 6000 ]] || fail "too few cells: $(value finite_cells)"
+
+expect 0 "" -- triangulate --generate weighted:3000 --check --remove 300 --seed 5
+[[ "$(value valid_after_remove)" == "true" ]] || fail "not valid after removals"
+[[ "$(value removed)" == "300" ]] || fail "removed $(value removed) of 300"
+
+# A text file with a duplicate point and a weight: the lighter duplicate is hidden.
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1 0.5\n0 0 0 0.25\n' >"$TMP/pts.txt"
+expect 0 "" -- triangulate "$TMP/pts.txt" --check
+[[ "$(value hidden)" == "1" ]] || fail "expected 1 hidden point, got $(value hidden)"
+
+# Coplanar input never reaches dimension 3: reported, not a crash.
+printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$TMP/flat.txt"
+expect 0 "" -- triangulate "$TMP/flat.txt"
+[[ "$(value dimension)" == "2" ]] || fail "coplanar set: dimension $(value dimension)"
+
+expect 2 "cannot open" -- triangulate "$TMP/missing.bin"
+printf 'garbage here\n' >"$TMP/bad.txt"
+expect 2 "is not a number" -- triangulate "$TMP/bad.txt"
+head -c 40 /dev/urandom >"$TMP/bad.bin"
+expect 2 "not a multiple of 32" -- triangulate "$TMP/bad.bin"
+expect 2 "unknown kind" -- triangulate --generate cube:10
+expect 2 "" -- triangulate --generate uniform:10 --remove -3
+expect 2 "exactly one" -- triangulate "$TMP/pts.txt" --generate uniform:10
+expect 2 "" -- triangulate --no-such-option
+finish
