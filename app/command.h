@@ -45,5 +45,6 @@ using Runner = std::function<int(const GlobalOptions&)>;
 // One registration function per subcommand, each in its own cmd_*.cpp.
 Runner register_triangulate(CLI::App& app);
 Runner register_features(CLI::App& app);
+Runner register_info(CLI::App& app);
 
 }  // namespace delpsc::app

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     CLI::App* sub = app.add_subcommand(name, about);
     commands.emplace_back(sub, reg(*sub));
   };
+  add("info", "Model statistics: counts, bounding box, defects", register_info);
   add("features", "Find the corners, curves and patches of a polygon model", register_features);
   add("triangulate", "Build the 3D regular triangulation of a weighted point set", register_triangulate);
 

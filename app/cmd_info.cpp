@@ -1,0 +1,72 @@
+// `delpsc info`: what a model is made of and what is wrong with it, before meshing.
+#include <delpsc/protect/complex.h>
+#include <limits>
+#include <stdexcept>
+
+#include "command.h"
+#include "model_input.h"
+
+namespace delpsc::app {
+
+namespace {
+
+struct InfoOptions {
+  std::string input;
+  double angle = 60;
+};
+
+int run(const InfoOptions& o, const GlobalOptions& g) {
+  const io::ReadResult model = load_model(o.input, g);
+  const auto& soup = model.soup;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& v : soup.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  protect::ComplexOptions options;
+  options.feature_angle_degrees = o.angle;
+  protect::Complex complex;
+  try {
+    complex = protect::build_complex(soup, options);
+  } catch (const std::invalid_argument& e) {
+    throw Failure{kBadInput, o.input + ": " + e.what()};
+  }
+  std::size_t boundary = 0, non_manifold = 0;
+  for (std::size_t e = 0; e < complex.edges.size(); ++e) {
+    boundary += (complex.edge_feature[e] & protect::kBoundaryEdge) != 0;
+    non_manifold += (complex.edge_feature[e] & protect::kNonManifoldEdge) != 0;
+  }
+  char box[160];
+  std::snprintf(box, sizeof box, "%.9g %.9g %.9g %.9g %.9g %.9g", lo.x(), lo.y(), lo.z(), hi.x(),
+                hi.y(), hi.z());
+  report("format", model.report.format);
+  report("vertices", soup.vertices.size());
+  report("triangles", soup.triangles.size());
+  report("merged_vertices", model.report.merged_vertices);
+  report("zero_area_triangles", model.report.degenerate_triangles.size());
+  report("boundary_edges", boundary);
+  report("non_manifold_edges", non_manifold);
+  report("bbox", std::string(box));
+  report("diagonal", (hi - lo).norm());
+  report("corners", complex.corner_count());
+  report("curves", complex.curve_count());
+  report("patches", complex.patch_count());
+  report("warnings", model.report.warnings.size());
+  return kOk;
+}
+
+}  // namespace
+
+Runner register_info(CLI::App& app) {
+  auto o = std::make_shared<InfoOptions>();
+  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL or PLY")->required();
+  app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
+      ->check(CLI::Range(0.0, 180.0));
+  app.footer(
+      "Prints key=value lines: format, vertices, triangles, merged_vertices, "
+      "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
+      "patches, warnings.\n\nExample:\n  delpsc info part.stl");
+  return [o](const GlobalOptions& g) { return run(*o, g); };
+}
+
+}  // namespace delpsc::app
