@@ -1,0 +1,147 @@
+#include "disk_condition.h"
+
+#include <algorithm>
+
+namespace delpsc::refine {
+
+const char* to_string(DiskFailure f) {
+  switch (f) {
+    case DiskFailure::none: return "none";
+    case DiskFailure::d1: return "D1";
+    case DiskFailure::d2: return "D2";
+    case DiskFailure::d3: return "D3";
+    case DiskFailure::d4: return "D4";
+  }
+  return "?";
+}
+
+DiskCondition::DiskCondition(const Domain& domain, const BallSource& balls,
+                             const std::vector<VertexPlace>& places)
+    : domain_(&domain), balls_(&balls), places_(&places) {}
+
+namespace {
+
+std::size_t count_of(std::span<const std::uint32_t> list, std::uint32_t x) {
+  return static_cast<std::size_t>(std::count(list.begin(), list.end(), x));
+}
+
+}  // namespace
+
+void DiskCondition::patches_of(PointId p, std::vector<std::pair<std::uint32_t, bool>>& out) const {
+  out.clear();
+  if (p >= places_->size()) return;
+  const VertexPlace& v = (*places_)[p];
+  switch (v.kind) {
+    case VertexPlace::Kind::outside: return;
+    case VertexPlace::Kind::surface: out.emplace_back(v.patch, true); return;
+    case VertexPlace::Kind::ball: break;
+  }
+  if (v.corner == kNoElement) {
+    const auto patches = domain_->curve_patches(v.curve);
+    for (const std::uint32_t s : patches) {
+      if (std::any_of(out.begin(), out.end(), [&](const auto& e) { return e.first == s; })) continue;
+      out.emplace_back(s, count_of(patches, s) >= 2);  // σ on both sides of the curve: a slit
+    }
+    return;
+  }
+  // A corner is interior to σ only when every curve through it that bounds σ has σ on both
+  // sides (the end of a slit); otherwise it is on σ's boundary.
+  for (const std::uint32_t s : domain_->corner_patches(v.corner)) {
+    bool interior = true, bounded = false;
+    for (const std::uint32_t c : domain_->corner_curves(v.corner)) {
+      const std::size_t k = count_of(domain_->curve_patches(c), s);
+      if (k == 0) continue;
+      bounded = true;
+      interior &= k >= 2;
+    }
+    out.emplace_back(s, bounded && interior);
+  }
+}
+
+bool DiskCondition::on_patch(PointId q, std::uint32_t patch) const {
+  if (q >= places_->size()) return false;
+  const VertexPlace& v = (*places_)[q];
+  switch (v.kind) {
+    case VertexPlace::Kind::outside: return false;
+    case VertexPlace::Kind::surface: return v.patch == patch;
+    case VertexPlace::Kind::ball: break;
+  }
+  const auto patches = v.corner == kNoElement ? domain_->curve_patches(v.curve) : domain_->corner_patches(v.corner);
+  return std::find(patches.begin(), patches.end(), patch) != patches.end();
+}
+
+DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) const {
+  std::vector<std::pair<std::uint32_t, bool>> patches;
+  patches_of(p, patches);
+  const bool p_is_ball = (*places_)[p].kind == VertexPlace::Kind::ball;
+  DiskVerdict late;  // first D3/D4 failure, reported if no D1/D2 failure is found
+  std::vector<std::array<PointId, 2>> link;
+  std::vector<std::uint32_t> link_facet;
+  std::vector<PointId> verts;
+  std::vector<int> degree;
+  for (const auto& [sigma, interior] : patches) {
+    link.clear();
+    link_facet.clear();
+    for (const std::uint32_t s : facets.incident(p)) {
+      const RestrictedFacet& r = facets[s];
+      if (r.patch != sigma) continue;
+      std::array<PointId, 2> e{};
+      int n = 0;
+      for (const PointId v : r.vertices)
+        if (v != p) e[n++] = v;
+      link.push_back(e);
+      link_facet.push_back(s);
+    }
+    if (link.empty()) return {DiskFailure::d1, sigma, kNoFacet};
+    // The link graph: vertices with their degrees.
+    verts.clear();
+    degree.clear();
+    auto index = [&](PointId v) {
+      const auto it = std::find(verts.begin(), verts.end(), v);
+      if (it != verts.end()) return static_cast<std::size_t>(it - verts.begin());
+      verts.push_back(v);
+      degree.push_back(0);
+      return verts.size() - 1;
+    };
+    for (const auto& e : link) {
+      ++degree[index(e[0])];
+      ++degree[index(e[1])];
+    }
+    if (std::any_of(degree.begin(), degree.end(), [](int d) { return d > 2; }))
+      return {DiskFailure::d1, sigma, kNoFacet};
+    // Connected? Grow from the first edge's vertex over the edges (small: quadratic is fine).
+    std::vector<char> reached(verts.size(), 0);
+    reached[0] = 1;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (const auto& e : link) {
+        const std::size_t a = index(e[0]), b = index(e[1]);
+        if (reached[a] != reached[b]) {
+          reached[a] = reached[b] = 1;
+          grew = true;
+        }
+      }
+    }
+    if (std::find(reached.begin(), reached.end(), 0) != reached.end()) return {DiskFailure::d1, sigma, kNoFacet};
+    // Connected with degrees <= 2: a cycle when E == V, a path when E == V - 1.
+    const bool cycle = link.size() == verts.size();
+    if (cycle != interior) return {DiskFailure::d2, sigma, kNoFacet};
+    if (late.failure != DiskFailure::none) continue;
+    for (std::size_t i = 0; i < link.size() && late.failure == DiskFailure::none; ++i) {
+      for (const PointId q : link[i]) {
+        if (!on_patch(q, sigma)) {
+          late = {DiskFailure::d4, sigma, link_facet[i]};
+          break;
+        }
+        if (p_is_ball && (*places_)[q].kind == VertexPlace::Kind::ball &&
+            !balls_->adjacent((*places_)[p].ball, (*places_)[q].ball)) {
+          late = {DiskFailure::d3, sigma, link_facet[i]};
+          break;
+        }
+      }
+    }
+  }
+  return late;
+}
+
+}  // namespace delpsc::refine

@@ -1,0 +1,63 @@
+// Disk_Condition(p) of DelPSC (Dey & Levine 2009, §3), checked on the umbrellas
+// Umb_σ(p) = the restricted triangles of Skl²|σ incident to p, for every patch σ containing p:
+//  (D1) the underlying space of Umb_σ(p) is a 2-disk (here: non-empty, and the link of p - the
+//       edges opposite p - is one simple path or one simple cycle);
+//  (D2) p is inside that disk (cycle) iff p ∈ int σ (an unweighted point, or a ball on a curve
+//       with σ on both of its sides, like a slit), on its boundary (path) otherwise;
+//  (D3) a vertex p on a curve or corner is joined in Umb_σ(p) to no ball that is not adjacent to it;
+//  (D4) every vertex of Umb_σ(p) lies in σ.
+// Once the restricted triangles are known the checks are combinatorial. Cost: O(k^2) for an
+// umbrella of k triangles (k is ~6-20).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ball_source.h"
+#include "restricted_facets.h"
+
+namespace delpsc::refine {
+
+/// Where a point of the mesher's triangulation lies in the complex.
+struct VertexPlace {
+  enum class Kind : std::uint8_t {
+    outside,  ///< not on the domain (the far frame points of the mesher)
+    surface,  ///< an unweighted point inserted on `patch`
+    ball,     ///< the centre of protecting ball `ball`, on `curve` or at `corner`
+  };
+  Kind kind = Kind::outside;
+  std::uint32_t patch = kNoElement;
+  BallKey ball = kNoBallKey;
+  std::uint32_t curve = kNoElement;
+  std::uint32_t corner = kNoElement;
+};
+
+enum class DiskFailure : std::uint8_t { none, d1, d2, d3, d4 };
+const char* to_string(DiskFailure f);
+
+struct DiskVerdict {
+  DiskFailure failure = DiskFailure::none;
+  std::uint32_t patch = kNoElement;  ///< the σ of the failing umbrella
+  std::uint32_t facet = kNoFacet;    ///< D3/D4: a restricted facet of Umb_σ(p) showing the failure
+};
+
+class DiskCondition {
+ public:
+  /// All three must outlive this object; `places` is indexed by PointId and may grow.
+  DiskCondition(const Domain& domain, const BallSource& balls, const std::vector<VertexPlace>& places);
+
+  /// The patches containing p, with whether p is interior to each (see D2).
+  void patches_of(PointId p, std::vector<std::pair<std::uint32_t, bool>>& out) const;
+  /// Whether vertex q lies on patch σ (for D4).
+  bool on_patch(PointId q, std::uint32_t patch) const;
+  /// The first failure found at p, D1/D2 reported before D3/D4; none for a point outside the
+  /// domain.
+  DiskVerdict check(PointId p, const RestrictedFacets& facets) const;
+
+ private:
+  const Domain* domain_;
+  const BallSource* balls_;
+  const std::vector<VertexPlace>* places_;
+};
+
+}  // namespace delpsc::refine

@@ -1,0 +1,45 @@
+// Mesher::output: ∪ Skl^i S|_D (DelPSC step 3) as an io::SurfaceMesh.
+#include <algorithm>
+#include <map>
+#include <unordered_map>
+
+#include "mesher.h"
+#include "triangle_orientation.h"
+
+namespace delpsc::refine {
+
+io::SurfaceMesh Mesher::output() const {
+  io::SurfaceMesh mesh;
+  std::unordered_map<PointId, std::uint32_t> index;
+  auto vertex = [&](PointId p) {
+    const auto [it, fresh] = index.emplace(p, static_cast<std::uint32_t>(mesh.vertices.size()));
+    if (fresh) mesh.vertices.push_back(dt_.point(p).point());
+    return it->second;
+  };
+  // Skl² per patch: every restricted (t, σ). Sorted for a deterministic output.
+  std::vector<std::pair<std::uint32_t, std::array<PointId, 3>>> triangles;
+  facets_.for_each([&](std::uint32_t, const RestrictedFacet& r) { triangles.emplace_back(r.patch, r.vertices); });
+  std::sort(triangles.begin(), triangles.end());
+  for (const auto& [patch, v] : triangles) {
+    mesh.triangles.push_back({vertex(v[0]), vertex(v[1]), vertex(v[2])});
+    mesh.triangle_patch.push_back(static_cast<std::int32_t>(patch));
+  }
+  orient_triangles(mesh.vertices, mesh.triangles);
+  // Skl¹: consecutive ball centres along each curve; Skl⁰: the corner balls.
+  for (std::uint32_t c = 0; c < domain_->curve_count(); ++c) {
+    const std::vector<BallKey> chain = balls_->curve_chain(c);
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      const auto a = ball_point_.find(chain[i]), b = ball_point_.find(chain[i + 1]);
+      if (a == ball_point_.end() || b == ball_point_.end()) continue;
+      mesh.edges.push_back({vertex(a->second), vertex(b->second)});
+      mesh.edge_curve.push_back(static_cast<std::int32_t>(c));
+    }
+  }
+  std::map<std::uint32_t, PointId> corners;
+  for (const auto& [key, p] : ball_point_)
+    if (places_[p].corner != kNoElement) corners[places_[p].corner] = p;
+  for (const auto& [corner, p] : corners) mesh.corners.push_back(vertex(p));
+  return mesh;
+}
+
+}  // namespace delpsc::refine

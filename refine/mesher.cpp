@@ -1,0 +1,298 @@
+#include "mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <delpsc/kernel/predicates.h>
+
+namespace delpsc::refine {
+
+using delaunay::CellId;
+using delaunay::PointStatus;
+
+Mesher::Mesher(const Domain& domain, BallSource& balls, const MesherOptions& options)
+    : domain_(&domain),
+      balls_(&balls),
+      options_(options),
+      facets_(dt_, domain),
+      disk_(domain, balls, places_) {
+  if (!(options.facet_size > 0) || !std::isfinite(options.facet_size))
+    throw std::invalid_argument("Mesher: facet_size must be positive and finite");
+}
+
+void Mesher::seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const {
+  const kernel::Box3 box = domain_->bounding_box();
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const double diag = (box.hi - box.lo).norm();
+  const Vec3 dirs[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+  std::vector<SurfaceHit> hits;
+  for (std::uint32_t patch = 0; patch < domain_->patch_count(); ++patch) {
+    if (!domain_->patch_curves(patch).empty()) continue;
+    // Candidates: where lines through the patch's interior point and through the box centre
+    // meet the patch. Then farthest-point sampling from the interior point.
+    std::vector<Vec3> candidates{domain_->patch_interior_point(patch)};
+    for (const Vec3& through : {candidates[0], centre})
+      for (const Vec3& d : dirs) {
+        const Vec3 u = d.normalized() * 2 * diag;
+        domain_->intersect_segment(through - u, through + u, hits);
+        for (const SurfaceHit& h : hits)
+          if (h.patch == patch) candidates.push_back(h.point);
+      }
+    std::vector<Vec3> chosen{candidates[0]};
+    std::vector<double> dist(candidates.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) dist[i] = (candidates[i] - chosen[0]).squaredNorm();
+    while (static_cast<int>(chosen.size()) < options_.seeds_per_patch) {
+      const auto far = std::max_element(dist.begin(), dist.end()) - dist.begin();
+      if (dist[far] <= 1e-18 * diag * diag) break;
+      chosen.push_back(candidates[far]);
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        dist[i] = std::min(dist[i], (candidates[i] - chosen.back()).squaredNorm());
+    }
+    for (const Vec3& p : chosen) {
+      seeds.push_back(p);
+      seed_patch.push_back(patch);
+    }
+  }
+}
+
+void Mesher::initialise() {
+  const kernel::Box3 box = domain_->bounding_box();
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const double diag = std::max((box.hi - box.lo).norm(), 1e-300);
+  std::vector<WeightedPoint> points;
+  std::vector<VertexPlace> places;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner = centre + 3 * diag * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    points.push_back(WeightedPoint::from(corner));
+    places.emplace_back();
+  }
+  frame_points_ = 8;
+  const std::vector<BallKey> keys = balls_->live_balls();
+  for (const BallKey k : keys) {
+    const ProtectingBall b = balls_->ball(k);
+    points.push_back(WeightedPoint::from(b.centre, b.radius * b.radius));
+    VertexPlace v;
+    v.kind = VertexPlace::Kind::ball;
+    v.ball = k;
+    v.curve = b.curve;
+    v.corner = b.corner;
+    places.push_back(v);
+  }
+  std::vector<Vec3> seeds;
+  std::vector<std::uint32_t> seed_patch;
+  seed_points(seeds, seed_patch);
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    const double x[3] = {seeds[i].x(), seeds[i].y(), seeds[i].z()};
+    // Admissibility: no seed inside a ball (balls of other components may reach this patch).
+    const bool inside = std::any_of(keys.begin(), keys.end(), [&](BallKey k) {
+      const ProtectingBall b = balls_->ball(k);
+      const WeightedPoint w = WeightedPoint::from(b.centre, b.radius * b.radius);
+      return kernel::power_distance_sign(x, w.data()) <= 0;
+    });
+    if (inside) continue;
+    points.push_back(WeightedPoint::from(seeds[i]));
+    VertexPlace v;
+    v.kind = VertexPlace::Kind::surface;
+    v.patch = seed_patch[i];
+    places.push_back(v);
+    ++stats_.seeds;
+  }
+  std::vector<PointId> ids;
+  dt_.insert(points, &ids);
+  places_.assign(dt_.number_of_points(), {});
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    places_[ids[i]] = places[i];
+    if (places[i].kind == VertexPlace::Kind::ball) ball_point_[places[i].ball] = ids[i];
+  }
+  touched_.clear();
+  facets_.rebuild(touched_);
+  for (PointId p = 0; p < places_.size(); ++p) recheck(p);
+}
+
+void Mesher::recheck(PointId p) {
+  failing_d12_.erase(p);
+  failing_d34_.erase(p);
+  if (p >= places_.size() || places_[p].kind == VertexPlace::Kind::outside) return;
+  if (dt_.status(p) != PointStatus::vertex) {
+    // A hidden ball still protects its curve but has no umbrella: D1 fails at it.
+    if (dt_.status(p) == PointStatus::hidden && places_[p].kind == VertexPlace::Kind::ball) failing_d12_.insert(p);
+    return;
+  }
+  const DiskVerdict v = disk_.check(p, facets_);
+  if (v.failure == DiskFailure::d1 || v.failure == DiskFailure::d2) failing_d12_.insert(p);
+  if (v.failure == DiskFailure::d3 || v.failure == DiskFailure::d4) failing_d34_.insert(p);
+}
+
+void Mesher::apply(const delaunay::ChangeSet& changes) {
+  touched_.clear();
+  facets_.update(changes, touched_);
+  for (const PointId p : changes.hidden) touched_.push_back(p);
+  for (const PointId p : changes.revealed) touched_.push_back(p);
+  std::sort(touched_.begin(), touched_.end());
+  touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+  for (const PointId p : touched_) recheck(p);
+}
+
+bool Mesher::insert_surface_point(std::uint32_t slot) {
+  const RestrictedFacet r = facets_[slot];
+  const double x[3] = {r.point.x(), r.point.y(), r.point.z()};
+  // x lies on V_t: t's vertices are its power-nearest, so positive power distance to them means
+  // positive power distance to every vertex, i.e. x lies in no ball (admissibility, §2.1).
+  for (const PointId v : r.vertices) {
+    if (kernel::power_distance_sign(x, dt_.point(v).data()) > 0) continue;
+    ++stats_.refused_inside_ball;
+    if (places_[v].kind == VertexPlace::Kind::ball) {
+      refine_ball(places_[v].ball);
+      return true;
+    }
+    return false;  // x on top of an unweighted vertex: nothing to insert
+  }
+  const PointId id = static_cast<PointId>(dt_.number_of_points());
+  VertexPlace place;
+  place.kind = VertexPlace::Kind::surface;
+  place.patch = r.patch;
+  places_.push_back(place);
+  const CellId hint = dt_.incident_cell(r.vertices[0]);
+  dt_.insert(WeightedPoint::from(r.point), &changes_, hint);
+  if (dt_.status(id) != PointStatus::vertex)
+    throw std::logic_error("Mesher: an admissible surface point did not become a vertex");
+  apply(changes_);
+  return true;
+}
+
+PointId Mesher::insert_ball(BallKey key) {
+  const ProtectingBall b = balls_->ball(key);
+  const PointId id = static_cast<PointId>(dt_.number_of_points());
+  VertexPlace v;
+  v.kind = VertexPlace::Kind::ball;
+  v.ball = key;
+  v.curve = b.curve;
+  v.corner = b.corner;
+  places_.push_back(v);
+  dt_.insert(WeightedPoint::from(b.centre, b.radius * b.radius), &changes_);
+  ball_point_[key] = id;
+  // Unweighted points the new ball hides are forgotten (they would break admissibility).
+  std::vector<PointId> swallowed;
+  for (const PointId h : changes_.hidden)
+    if (places_[h].kind == VertexPlace::Kind::surface) swallowed.push_back(h);
+  apply(changes_);
+  for (const PointId h : swallowed) remove_point(h);
+  return id;
+}
+
+void Mesher::remove_point(PointId p) {
+  if (dt_.status(p) == PointStatus::removed) return;
+  std::string error;
+  if (!dt_.remove(p, &changes_, &error)) throw std::logic_error("Mesher: removal failed: " + error);
+  apply(changes_);
+  recheck(p);
+}
+
+void Mesher::refine_ball(BallKey key) {
+  ++stats_.ball_refinements;
+  const BallUpdate update = balls_->refine(key);
+  for (const BallKey k : update.removed) {
+    const auto it = ball_point_.find(k);
+    if (it == ball_point_.end()) continue;
+    const PointId p = it->second;
+    ball_point_.erase(it);
+    remove_point(p);
+  }
+  std::vector<PointId> added;
+  for (const BallKey k : update.added) added.push_back(insert_ball(k));
+  // Unweighted vertices inside a new ball: among its neighbours (a point inside the ball that
+  // is not hidden has a power cell touching the ball's).
+  std::vector<CellId> star;
+  std::vector<PointId> inside;
+  for (const PointId b : added) {
+    if (dt_.status(b) != PointStatus::vertex) continue;
+    star.clear();
+    dt_.incident_cells(b, star);
+    for (const CellId c : star)
+      for (int i = 0; i < 4; ++i) {
+        const PointId v = dt_.vertex(c, i);
+        if (v == delaunay::kInfiniteVertex || places_[v].kind != VertexPlace::Kind::surface) continue;
+        if (kernel::power_distance_sign(dt_.point(v).data(), dt_.point(b).data()) <= 0) inside.push_back(v);
+      }
+  }
+  std::sort(inside.begin(), inside.end());
+  inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+  for (const PointId v : inside) {
+    ++stats_.swallowed;
+    remove_point(v);
+  }
+}
+
+std::size_t Mesher::domain_vertex_count() const { return dt_.number_of_vertices() - frame_points_; }
+
+void Mesher::run() {
+  initialise();
+  if (dt_.dimension() < 3) {
+    stats_.stuck = true;
+    stats_.message = "the triangulation did not reach dimension 3";
+    return;
+  }
+  for (;;) {
+    if (options_.max_vertices > 0 && domain_vertex_count() >= options_.max_vertices) {
+      stats_.stopped_at_max_vertices = true;
+      stats_.message = "stopped at --max-vertices " + std::to_string(options_.max_vertices);
+      return;
+    }
+    const std::uint32_t top = facets_.largest();
+    const double d1 = top == kNoFacet ? -1 : facets_[top].size;
+    if (!failing_d12_.empty()) {
+      const BallKey big = balls_->largest();
+      const double d2 = big == kNoBallKey ? -1 : balls_->ball(big).radius;
+      if (top != kNoFacet && d1 >= d2) {
+        ++stats_.insertions_disk;
+        if (insert_surface_point(top)) continue;
+      } else if (big != kNoBallKey) {
+        refine_ball(big);
+        continue;
+      }
+      stats_.stuck = true;
+      stats_.message = "D1/D2 fails with nothing left to refine";
+      return;
+    }
+    if (!failing_d34_.empty()) {
+      const PointId p = *failing_d34_.begin();
+      const DiskVerdict v = disk_.check(p, facets_);
+      if (v.facet == kNoFacet) {  // stale entry
+        recheck(p);
+        if (failing_d34_.count(p) != 0) failing_d34_.erase(p);
+        continue;
+      }
+      ++stats_.insertions_d34;
+      if (insert_surface_point(v.facet)) continue;
+      stats_.stuck = true;
+      stats_.message = "D3/D4 fails at a point that cannot be inserted";
+      return;
+    }
+    if (top != kNoFacet && d1 > options_.facet_size) {
+      ++stats_.insertions_size;
+      if (insert_surface_point(top)) continue;
+      stats_.stuck = true;
+      stats_.message = "size criterion: point cannot be inserted";
+      return;
+    }
+    return;
+  }
+}
+
+std::vector<std::pair<PointId, DiskVerdict>> Mesher::failing_vertices() const {
+  std::vector<std::pair<PointId, DiskVerdict>> out;
+  for (PointId p = 0; p < places_.size(); ++p) {
+    if (places_[p].kind == VertexPlace::Kind::outside) continue;
+    const PointStatus s = dt_.status(p);
+    if (s == PointStatus::vertex) {
+      const DiskVerdict v = disk_.check(p, facets_);
+      if (v.failure != DiskFailure::none) out.emplace_back(p, v);
+    } else if (s == PointStatus::hidden && places_[p].kind == VertexPlace::Kind::ball) {
+      out.emplace_back(p, DiskVerdict{DiskFailure::d1, kNoElement, kNoFacet});
+    }
+  }
+  return out;
+}
+
+}  // namespace delpsc::refine

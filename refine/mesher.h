@@ -1,0 +1,108 @@
+// Mesh2Complex, step 2 of DelPSC (Dey & Levine 2009, §3), on a regular triangulation of the
+// protecting balls (weighted points) and of unweighted points inserted on the patches:
+//   (a) if some vertex p fails D1 or D2 (disk_condition.h): with d1 the largest size(t, σ) (x the
+//       point realising it) and d2 the largest ball radius, insert x if d1 >= d2, else RefineBall
+//       the largest ball; else if some vertex fails D3 or D4, insert the point of its offending
+//       umbrella triangle (the x of the termination proof, Theorem 3.1);
+//   (b) else if some size(t, σ) > λ, insert the point realising the largest;
+//   (c) repeat while something changed.
+// Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
+// facets follow (restricted_facets.h), and only the vertices of changed facets are re-checked.
+//
+// Admissibility (§2.1): an unweighted point is inserted only if its power distance to every
+// vertex of its facet is positive (kernel::power_distance_sign, exact) - they are its power-
+// nearest vertices, so it then lies in no ball; otherwise it is refused and the ball refined.
+// After a RefineBall, unweighted points that the new, smaller balls swallow are removed (the new
+// balls can poke slightly outside the old one).
+//
+// Initialisation: the balls; for every patch without boundary (a component without features) a
+// few seed points where lines through its interior point meet it; and 8 unweighted frame points
+// far outside the bounding box (3 diagonals away), which make the triangulation 3-dimensional
+// even for a flat sheet and keep removals legal. Their Voronoi cells never reach the domain
+// (every domain point is power-closer to any sample than to them), so no restricted facet uses
+// them.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include <delpsc/delaunay/regular_triangulation.h>
+#include <delpsc/io/surface_mesh.h>
+
+#include "ball_source.h"
+#include "disk_condition.h"
+#include "domain.h"
+#include "restricted_facets.h"
+
+namespace delpsc::refine {
+
+struct MesherOptions {
+  double facet_size = 0;          ///< λ of step 2(b), absolute (> 0)
+  std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
+  int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
+};
+
+struct MesherStats {
+  std::size_t insertions_disk = 0;      ///< step 2(a), D1/D2 failure, d1 >= d2
+  std::size_t insertions_d34 = 0;       ///< step 2(a), D3/D4 failure
+  std::size_t insertions_size = 0;      ///< step 2(b)
+  std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
+  std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
+  std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
+  std::size_t seeds = 0;
+  bool stopped_at_max_vertices = false;
+  bool stuck = false;                   ///< a failure no step could address (see message)
+  std::string message;
+};
+
+class Mesher {
+ public:
+  /// `domain` and `balls` must outlive the mesher; balls are refined through `balls`.
+  Mesher(const Domain& domain, BallSource& balls, const MesherOptions& options);
+
+  /// Runs step 2 until nothing changes (or the vertex cap). Call once.
+  void run();
+
+  /// ∪ Skl^i: restricted triangles labelled by patch (consistently oriented per connected
+  /// component, outward where the component is closed), edges between consecutive ball centres
+  /// labelled by curve, corners.
+  io::SurfaceMesh output() const;
+
+  /// Vertices of the domain (balls and surface points) that are vertices of the triangulation.
+  std::size_t domain_vertex_count() const;
+  /// Vertices failing the disk condition now, with the first failure of each.
+  std::vector<std::pair<PointId, DiskVerdict>> failing_vertices() const;
+
+  const MesherStats& stats() const { return stats_; }
+  const delaunay::RegularTriangulation& triangulation() const { return dt_; }
+  const RestrictedFacets& restricted_facets() const { return facets_; }
+
+ private:
+  void initialise();
+  void seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const;
+  void apply(const delaunay::ChangeSet& changes);  // facets, then re-check touched vertices
+  void recheck(PointId p);
+  bool insert_surface_point(std::uint32_t facet_slot);
+  void refine_ball(BallKey key);
+  PointId insert_ball(BallKey key);
+  void remove_point(PointId p);
+
+  const Domain* domain_;
+  BallSource* balls_;
+  MesherOptions options_;
+  delaunay::RegularTriangulation dt_;
+  std::vector<VertexPlace> places_;  // by PointId
+  RestrictedFacets facets_;
+  DiskCondition disk_;
+  std::unordered_map<BallKey, PointId> ball_point_;
+  std::unordered_set<PointId> failing_d12_, failing_d34_;
+  std::vector<PointId> touched_;
+  delaunay::ChangeSet changes_;
+  std::size_t frame_points_ = 0;
+  MesherStats stats_;
+};
+
+}  // namespace delpsc::refine

@@ -1,0 +1,39 @@
+// Guarantee G1 of DelPSC (Dey & Levine 2009, §3-4) checked on an output mesh: for each patch σ,
+// Skl²|σ (the triangles labelled σ) is a 2-manifold - every edge in one or two of its triangles,
+// the triangles around each vertex one disk (a fan whose link is a path or a cycle) - whose
+// boundary is exactly the chain of ball centres along σ's boundary curves (the mesh's feature
+// edges of the curves bounding σ once; a curve with σ on both sides, a slit, must be interior),
+// with every vertex on the domain near σ. Also per patch the Euler characteristic and the number
+// of boundary loops (for G2 against the input's).
+//
+// Independent of the mesher's data structures: it reads only the SurfaceMesh and the Domain.
+// Cost O(T log T) plus one closest-point query per vertex.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <delpsc/io/surface_mesh.h>
+
+#include "domain.h"
+
+namespace delpsc::refine {
+
+struct PatchSkeleton {
+  std::uint32_t patch = 0;
+  std::size_t vertices = 0, edges = 0, triangles = 0;
+  int euler = 0;                   ///< V - E + F of Skl²|σ
+  std::size_t boundary_loops = 0;  ///< connected components of its boundary edges
+};
+
+struct SkeletonReport {
+  std::vector<PatchSkeleton> patches;  ///< one per patch of the domain
+  std::vector<std::string> problems;   ///< empty iff G1 holds
+  bool ok() const { return problems.empty(); }
+};
+
+/// `tolerance`: largest distance accepted between a vertex and the domain (absolute).
+SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance);
+
+}  // namespace delpsc::refine

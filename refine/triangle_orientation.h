@@ -1,0 +1,20 @@
+// Consistent orientation of a triangle set: triangles joined across an edge that exactly two
+// triangles share are oriented alike (the shared edge traversed in opposite directions) by a
+// breadth-first search; a component all of whose edges have two triangles (closed) is then
+// turned so that its signed volume is positive (counter-clockwise seen from outside). A
+// non-orientable component keeps the orientation the search gave it. O(T log T).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <delpsc/kernel/point.h>
+
+namespace delpsc::refine {
+
+/// Reorders the vertices of triangles in place; returns the number of components found
+/// non-orientable.
+std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+}  // namespace delpsc::refine
