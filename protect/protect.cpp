@@ -1,0 +1,159 @@
+// Protect(D, λ), DelPSC §3 (steps in protect.h), and the Engine shared by its parts.
+#include "protect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include <nanoflann.hpp>
+
+#include "protect_engine.h"
+
+namespace delpsc::protect {
+
+namespace detail {
+
+Engine::Engine(BallSet& b, const ProtectOptions& l, ProtectStats& s)
+    : balls(b),
+      complex(b.complex()),
+      options(l),
+      stats(s),
+      first_new_id_(static_cast<BallId>(b.id_bound())),
+      min_radius_(l.min_radius_fraction * b.diagonal()) {}
+
+void Engine::check_caps(double radius) const {
+  char message[320];
+  if (balls.size() >= options.max_balls) {
+    std::snprintf(message, sizeof message,
+                  "protection stopped: more than %zu balls (the cap); curves closer together, or "
+                  "meeting at smaller angles, than the size asked for can resolve?",
+                  options.max_balls);
+    throw ProtectionError(message);
+  }
+  if (!(radius >= min_radius_)) {
+    std::snprintf(message, sizeof message,
+                  "protection stopped: a ball of radius %.3g, below the cap of %.3g (%.3g of the "
+                  "bounding-box diagonal), with %zu balls; curves touching or crossing?",
+                  radius, min_radius_, options.min_radius_fraction, balls.size());
+    throw ProtectionError(message);
+  }
+}
+
+BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
+  check_caps(radius);
+  const BallId old = balls.corner_ball(corner);
+  const BallId id = balls.set_corner_ball(corner, radius);
+  if (old != kNoBall && old < first_new_id_) removed_.push_back(old);
+  created_.push_back(id);
+  return id;
+}
+
+BallId Engine::insert_interior(std::uint32_t curve, BallId after, double s, double radius) {
+  check_caps(radius);
+  const BallId id = balls.insert_interior(curve, after, s, radius);
+  created_.push_back(id);
+  return id;
+}
+
+void Engine::remove_interior(BallId id) {
+  balls.remove_interior(id);
+  if (id < first_new_id_) removed_.push_back(id);
+}
+
+}  // namespace detail
+
+namespace {
+
+// The corners' positions for nanoflann.
+struct CornerCloud {
+  const Complex& complex;
+  std::size_t kdtree_get_point_count() const { return complex.corner_count(); }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const {
+    return complex.vertices[complex.corner_vertex[i]][static_cast<Eigen::Index>(dim)];
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const { return false; }
+};
+
+// Distance from each corner to the nearest other one (infinity if there is none). O(n log n).
+std::vector<double> nearest_corner_distances(const Complex& complex) {
+  const std::size_t n = complex.corner_count();
+  std::vector<double> d(n, std::numeric_limits<double>::infinity());
+  if (n < 2) return d;
+  CornerCloud cloud{complex};
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, CornerCloud>,
+                                                   CornerCloud, 3, std::uint32_t>;
+  Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec3& p = complex.vertices[complex.corner_vertex[k]];
+    std::uint32_t ids[2];
+    double d2[2];
+    const auto found = tree.knnSearch(p.data(), 2, ids, d2);
+    // Corners are distinct vertices of a welded mesh: the nearest is the corner itself.
+    for (std::size_t i = 0; i < found; ++i)
+      if (ids[i] != k) d[k] = std::min(d[k], std::sqrt(d2[i]));
+  }
+  return d;
+}
+
+// Step 1: the vertex ball radius of every corner (protect.h).
+double vertex_radius(const BallSet& balls, std::uint32_t corner, double nearest, double lambda) {
+  const Complex& complex = balls.complex();
+  double r = std::isfinite(nearest) ? nearest / 3 : balls.diagonal() / 3;
+  for (const std::uint32_t c : complex.corner_curve_ids(corner))
+    if (complex.curves[c].closed) r = std::min(r, complex.curves[c].length / 6);
+  while (r > lambda) r /= 2;
+  for (const std::uint32_t c : complex.corner_curve_ids(corner)) {
+    const Curve& curve = complex.curves[c];
+    if (!curve.closed) continue;
+    while (true) {
+      const CurveInterval seg = complex.segment_in_ball(c, 0, r);
+      if (!seg.whole && seg.s1 - seg.s0 <= curve.length / 2) break;
+      r /= 2;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+BallSet protect(const Complex& complex, double lambda, const ProtectOptions& options, ProtectStats* stats) {
+  if (!(lambda > 0) || !std::isfinite(lambda))
+    throw std::invalid_argument("protect: the size lambda must be positive and finite");
+  BallSet balls(complex);
+  ProtectStats local;
+  detail::Engine engine(balls, options, stats ? *stats : local);
+
+  // 1. Vertex balls.
+  const std::vector<double> nearest = nearest_corner_distances(complex);
+  for (std::uint32_t k = 0; k < complex.corner_count(); ++k)
+    engine.set_corner_ball(k, vertex_radius(balls, k, nearest[k], lambda));
+
+  // 2. Cover each curve between its vertex balls with α = min(r_u, r_v).
+  for (std::uint32_t c = 0; c < complex.curve_count(); ++c) {
+    const Curve& curve = complex.curves[c];
+    const BallOnCurve u{balls.corner_ball(curve.start_corner), 0.0};
+    const BallOnCurve v{balls.corner_ball(curve.end_corner), curve.length};
+    detail::CoverSizes sizes;
+    sizes.alpha = std::min(balls[u.id].radius, balls[v.id].radius);
+    detail::cover(engine, c, u, v, sizes);
+  }
+
+  // 3. Refine every ball larger than λ (Cover's 7α/6 end game can exceed it), in rounds.
+  std::vector<BallId> too_big;
+  while (balls.largest() != kNoBall && balls[balls.largest()].radius > lambda) {
+    too_big.clear();
+    for (const BallId id : balls.live_ids())
+      if (balls[id].radius > lambda) too_big.push_back(id);
+    detail::refine_balls(engine, too_big);
+  }
+
+  // 4. Separate all balls (and repair any adjacent pair failing C2 / C3.a).
+  detail::separate(engine, balls.live_ids());
+  return balls;
+}
+
+}  // namespace delpsc::protect

@@ -1,0 +1,123 @@
+// Protect(D, λ) and RefineBall of DelPSC (Dey & Levine 2009, §2.2 and §3): protecting balls
+// computed on the fly, with no local feature size and no gap size, only seg_σ(b) (curve ∩ ball).
+//
+// protect(complex, λ):
+//  1. Vertex balls (protect.cpp): B(v, r_v), r_v one third of the distance from v to the
+//     nearest other corner (a KD-tree query). Where the paper leaves it open: a corner with no
+//     other corner uses one third of the bounding-box diagonal; a corner on a closed curve of
+//     length L takes at most L/6 and is halved while its segment on that curve spans more than
+//     half of it (else the corner ball could swallow its own loop and leave Cover nothing to
+//     cover). Then r_v is halved until r_v <= λ — what step 3's RefineBall would do to a vertex
+//     ball, done before the curves are covered so they are covered once.
+//  2. Each curve σ(u, v) is covered by Cover(x, y, α), α = min(r_u, r_v) (cover.cpp): aiding
+//     balls β = B(y_i, α/3), next centre where seg_σ(β) ends, radius α, and the end game with the
+//     enlarged aiding ball (2α/3) or the last ball enlarged (7α/6), exactly as §2.2.
+//  3. Balls larger than λ are refined (refine_ball.cpp).
+//  4. Separate (separate.cpp) until balls on different curves are disjoint (C3.b).
+//
+// RefineBall(b): a vertex ball is shrunk to half its radius and the ball next to it on every
+// curve ending there is refined; another ball is removed and the curve between its neighbours'
+// segments is covered again. The paper covers it with α = r_σ/4, r_σ the smallest radius among
+// the ball and its two neighbours (graded_cover = false). That is the one rule here that is not
+// the paper's by default, for this reason: when the neighbour b_1 was itself just refined, its
+// radius is up to 6 times smaller than the others (an end-game ball of 2/3 of a quarter), so
+// the whole gap is covered with balls 4 to 6 times smaller again, and the next ball along is
+// refined next to those: refining the largest ball over and over, as the mesher does (§3),
+// shrinks the balls along a curve geometrically. Measured on the cube at λ = 4% of the diagonal,
+// 25 refinements of the largest ball: with α = r_σ/4 the 16th passes 200,000 balls (the 13th
+// alone adds 20,000); graded, they add 4 to 24 balls each.
+//   Graded cover (the default): α_max = r_b/4 (r_b the ball's radius, the smallest in a run),
+// and the α of each step of Cover, read where the step leaves seg(b_i), is
+//     min(α_max, 0.6 r_1 + 0.1 d_σ(x, s), 0.6 r_2 + 0.1 d_σ(s, y)),
+// small next to a small neighbour and growing along the curve. Why it keeps Lemma 2.4 (the
+// derivation on a straight curve; on a winding one the repair below is the judge):
+//  - consecutive balls of radii ρ, ρ' (ρ' the later): the next centre is at arc length at least
+//    ρ + ρ'/3 from the last, so C2 holds for any ratio (ρ + ρ'/3 <= max + 6 min / 7), and C3.a
+//    needs ρ + ρ'/3 >= 8ρ'/7, i.e. ρ'/ρ <= 21/17; the slope 0.1 bounds the ratio by 1 + 0.1 (4/3);
+//  - next to b_1 the first α is at most 0.6 r_1, under the r_1 that the 7α/6 end game needs
+//    (r_1 + α/3 >= 8 (7α/6) / 7 iff α <= r_1);
+//  - next to b_2 the 7α/6 end game needs r_2 >= 4α/3 (the curve from that ball's centre to
+//    seg(b_2) may be short); α <= 0.6 r_2 + 0.1 (4α/3) gives α <= 0.69 r_2;
+//  - every new ball is at most 7/6 α_max = 7/24 r_b, Lemma 2.5's factor, so termination holds.
+// The paper's α = r_σ/4 is the special case of a flat size at a quarter of the smallest
+// neighbour; Protect's first cover of each curve (step 2) keeps the paper's α = min(r_u, r_v).
+//
+// Two more choices where the paper leaves the order open:
+//  - Balls are refined in rounds: every ball that must be refined now (all balls above λ; the
+//    larger ball of every intersecting pair on different curves) is collected first, and a run
+//    of consecutive such balls on a curve is refined as one: removed together, the gap between
+//    the run's two outer neighbours covered once (with r_b the smallest radius in the run, and
+//    the paper's r_σ over the run and its neighbours). With the paper's α this is what keeps
+//    Separate from the geometric shrinking above: refined one by one (refine_runs = false),
+//    the 10° wedge at λ = 4% ends with 378,000 balls instead of 295, and the 2° wedge passes
+//    2,000,000. With the graded cover both orders give a few hundred to a few thousand balls.
+//  - After each round the new balls are checked against their neighbours for C2 and C3.a, and a
+//    failing pair's culprit (C2: the larger ball; C3.a: the ball whose segment holds the other
+//    centre) is refined in the next round (ProtectStats::repairs). Lemma 2.4 says Cover never
+//    fails them; its proof glosses over the end games, and one case does fail: in step 2,
+//    α = min(r_u, r_v) may equal r_v, and a last ball enlarged to 7α/6 then holds the centre v
+//    at curve distance in (α, 7α/6) < 8 (7α/6) / 7 (crossed ridges, 2° wedge, disc: 2 to 16
+//    repairs). Large balls on a polyline that winds back can also break the proof's picture of
+//    the curve in a ball as one short arc. The checker (ball_checker.h) is the judge.
+//
+// Termination (Lemma 3.1) rests on radii never dropping below a positive constant. A safety cap
+// turns a runaway into a ProtectionError instead of a hang: more than max_balls live balls, or a
+// ball smaller than min_radius_fraction of the bounding-box diagonal.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+#include "balls.h"
+
+namespace delpsc::protect {
+
+/// Thrown when a safety cap of ProtectOptions is reached; what() says which and how far it got.
+class ProtectionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ProtectOptions {
+  std::size_t max_balls = 5'000'000;   ///< live balls
+  double min_radius_fraction = 1e-10;  ///< of the bounding-box diagonal
+  /// Refine a run of consecutive balls as one (see the file comment); false: one at a time.
+  bool refine_runs = true;
+  /// RefineBall covers with the graded size (see the file comment); false: the paper's
+  /// α = r_σ/4 throughout the gap.
+  bool graded_cover = true;
+};
+
+/// What happened, for reports and benchmarks.
+struct ProtectStats {
+  std::size_t covers = 0;           ///< Cover calls
+  std::size_t refined = 0;          ///< interior balls removed by RefineBall
+  std::size_t vertex_shrinks = 0;   ///< vertex balls halved by RefineBall (not counting step 1)
+  std::size_t separate_rounds = 0;  ///< rounds of Separate that found something to refine
+  std::size_t conflicts = 0;        ///< intersecting pairs on different curves found (C3.b)
+  std::size_t repairs = 0;          ///< adjacent pairs found failing C2 or C3.a after a Cover
+  std::size_t irregular = 0;        ///< Cover centres put midway because the neighbours' segments overlapped past a centre
+};
+
+/// Protect(D, λ): the protecting balls of every corner and curve of `complex`, all of radius
+/// <= lambda (> 0, same units as the coordinates), satisfying C1, C2, C3.a, C3.b and covering
+/// every curve (ball_checker.h). The complex must outlive the result. Throws
+/// std::invalid_argument for lambda not positive and finite, ProtectionError at a cap.
+BallSet protect(const Complex& complex, double lambda, const ProtectOptions& options = {},
+                ProtectStats* stats = nullptr);
+
+/// The balls a refinement removed (live before, dead after) and added (live after, created by
+/// it), each increasing. A shrunk vertex ball appears in both, under its old and new id.
+struct BallChanges {
+  std::vector<BallId> removed, added;
+};
+
+/// RefineBall(b) followed by Separate of the balls it made, for the mesher (§3: refine the
+/// largest ball when the disk condition fails and it is larger than the largest restricted
+/// triangle): keeps C1, C2, C3.a, C3.b and coverage if they held. Precondition: b alive.
+/// Throws std::invalid_argument for a dead b, ProtectionError at a cap.
+BallChanges refine_ball(BallSet& balls, BallId b, const ProtectOptions& options = {},
+                        ProtectStats* stats = nullptr);
+
+}  // namespace delpsc::protect

@@ -1,0 +1,63 @@
+// Internal to protect/: the state shared by Cover (cover.cpp), RefineBall (refine_ball.cpp) and
+// Separate (separate.cpp) while protect() or refine_ball() (protect.h) runs: the ball set, the
+// safety caps, the statistics, and the log of what was removed and created, from which
+// refine_ball reports its changes.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "protect.h"
+
+namespace delpsc::protect::detail {
+
+class Engine {
+ public:
+  Engine(BallSet& balls, const ProtectOptions& options, ProtectStats& stats);
+
+  BallSet& balls;
+  const Complex& complex;
+  const ProtectOptions& options;
+  ProtectStats& stats;
+
+  /// The edits of BallSet, logged and checked against the caps (ProtectionError).
+  BallId set_corner_ball(std::uint32_t corner, double radius);
+  BallId insert_interior(std::uint32_t curve, BallId after, double s, double radius);
+  void remove_interior(BallId id);
+
+  /// Ids created since the engine started, in order (some may be dead again).
+  const std::vector<BallId>& created() const { return created_; }
+  /// Ids that existed when the engine started and were removed since, in order.
+  const std::vector<BallId>& removed() const { return removed_; }
+
+ private:
+  void check_caps(double radius) const;
+
+  BallId first_new_id_;
+  double min_radius_;
+  std::vector<BallId> created_, removed_;
+};
+
+/// The α of a Cover: the paper's one number, or the graded size of protect.h,
+/// min(alpha, left_limit + slope (s - x), right_limit + slope (y - s)) read where each step starts.
+struct CoverSizes {
+  double alpha = 0;
+  bool graded = false;
+  double left_limit = 0, right_limit = 0, slope = 0;
+};
+
+/// Cover(x, y, α) of §2.2 on `curve` between the adjacent balls `left` and `right` (x the end
+/// of seg(left), y the start of seg(right)); returns the ids of the balls it made, in order
+/// (at least one).
+std::vector<BallId> cover(Engine& engine, std::uint32_t curve, const BallOnCurve& left,
+                          const BallOnCurve& right, const CoverSizes& sizes);
+
+/// RefineBall of every live ball in `marked` (duplicates allowed), runs of consecutive interior
+/// balls together unless options.refine_runs is false (protect.h). Returns the balls made.
+std::vector<BallId> refine_balls(Engine& engine, std::span<const BallId> marked);
+
+/// Separate: refines until no ball meets a ball with which it shares no curve, and no adjacent
+/// pair fails C2 or C3.a, given that any such ball is in `candidates` or is made on the way.
+void separate(Engine& engine, std::vector<BallId> candidates);
+
+}  // namespace delpsc::protect::detail

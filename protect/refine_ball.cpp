@@ -1,0 +1,119 @@
+// RefineBall, DelPSC §2.2, applied to a set of balls at once (protect.h explains the runs).
+//   vertex ball B(v, r): replaced by B(v, r/2); the ball next to it on every curve ending at v
+//                        is refined as well (in the same round);
+//   interior ball b:     removed with the rest of its run of consecutive marked balls; the gap
+//                        between the run's neighbours b_1, b_2 is covered by
+//                        Cover(x, y, r_σ/4), x the end of seg(b_1), y the start of seg(b_2),
+//                        r_σ the smallest radius among the run, b_1 and b_2.
+// Every new ball is at most 7/24 of the radius of a ball it replaces (Lemma 2.5).
+// refine_ball (protect.h) is RefineBall of one ball followed by Separate.
+#include <algorithm>
+#include <stdexcept>
+
+#include "protect_engine.h"
+
+namespace delpsc::protect {
+
+namespace detail {
+
+namespace {
+
+// The graded size (protect.h): at most this fraction of a neighbour's radius next to it, and
+// growing by at most this much per unit of curve length.
+constexpr double kJunctionFraction = 0.6;
+constexpr double kGradedSlope = 0.1;
+
+// Refines the run of consecutive marked interior balls that contains `seed`, unmarking them.
+void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked) {
+  BallSet& balls = engine.balls;
+  BallId lo = seed, hi = seed;
+  // Balls made by earlier runs of this round have ids past the marks: never marked.
+  auto is_marked = [&](BallId id) { return id < marked.size() && marked[id]; };
+  if (engine.options.refine_runs) {
+    while (is_marked(balls[lo].prev)) lo = balls[lo].prev;
+    while (is_marked(balls[hi].next)) hi = balls[hi].next;
+  }
+  const std::uint32_t curve = balls[seed].curve;
+  const BallOnCurve left = balls.before(lo), right = balls.after(hi);
+  double r_run = balls[lo].radius;  // the smallest radius in the run
+  for (BallId id = lo;; id = balls[id].next) {
+    r_run = std::min(r_run, balls[id].radius);
+    if (id == hi) break;
+  }
+  const double r_left = balls[left.id].radius, r_right = balls[right.id].radius;
+  CoverSizes sizes;
+  if (engine.options.graded_cover) {
+    sizes.graded = true;
+    sizes.alpha = r_run / 4;
+    sizes.left_limit = kJunctionFraction * r_left;
+    sizes.right_limit = kJunctionFraction * r_right;
+    sizes.slope = kGradedSlope;
+  } else {
+    sizes.alpha = std::min({r_run, r_left, r_right}) / 4;  // r_σ / 4
+  }
+  for (BallId id = lo, stop = balls[hi].next; id != stop;) {
+    const BallId next = balls[id].next;
+    marked[id] = false;
+    engine.remove_interior(id);
+    ++engine.stats.refined;
+    id = next;
+  }
+  cover(engine, curve, left, right, sizes);
+}
+
+}  // namespace
+
+std::vector<BallId> refine_balls(Engine& engine, std::span<const BallId> to_refine) {
+  BallSet& balls = engine.balls;
+  const Complex& complex = engine.complex;
+  const std::size_t first_created = engine.created().size();
+
+  // Vertex balls first: shrinking one marks its neighbours, which join the runs below.
+  std::vector<BallId> interior;
+  for (const BallId id : to_refine) {
+    if (!balls.alive(id)) continue;  // a duplicate, or a vertex ball already shrunk this round
+    const Ball& b = balls[id];
+    if (!b.is_corner()) {
+      interior.push_back(id);
+      continue;
+    }
+    const std::uint32_t corner = b.corner;
+    engine.set_corner_ball(corner, b.radius / 2);
+    ++engine.stats.vertex_shrinks;
+    for (const std::uint32_t c : complex.corner_curve_ids(corner)) {
+      if (complex.curves[c].start_corner == corner) interior.push_back(balls.first_interior(c));
+      if (complex.curves[c].end_corner == corner) interior.push_back(balls.last_interior(c));
+    }
+  }
+
+  std::vector<bool> marked(balls.id_bound(), false);
+  for (const BallId id : interior)
+    if (id != kNoBall && balls.alive(id)) marked[id] = true;
+  for (const BallId id : interior)
+    if (id != kNoBall && marked[id] && balls.alive(id)) refine_run(engine, id, marked);
+
+  const auto& created = engine.created();
+  std::vector<BallId> made;
+  for (std::size_t i = first_created; i < created.size(); ++i)
+    if (balls.alive(created[i])) made.push_back(created[i]);
+  return made;
+}
+
+}  // namespace detail
+
+BallChanges refine_ball(BallSet& balls, BallId b, const ProtectOptions& options, ProtectStats* stats) {
+  if (!balls.alive(b)) throw std::invalid_argument("refine_ball: the ball is not alive");
+  ProtectStats local;
+  detail::Engine engine(balls, options, stats ? *stats : local);
+  const BallId one[] = {b};
+  detail::separate(engine, detail::refine_balls(engine, one));
+
+  BallChanges changes;
+  changes.removed = engine.removed();
+  for (const BallId id : engine.created())
+    if (balls.alive(id)) changes.added.push_back(id);
+  std::sort(changes.removed.begin(), changes.removed.end());
+  return changes;
+}
+
+}  // namespace delpsc::protect
