@@ -46,5 +46,6 @@ using Runner = std::function<int(const GlobalOptions&)>;
 Runner register_triangulate(CLI::App& app);
 Runner register_features(CLI::App& app);
 Runner register_info(CLI::App& app);
+Runner register_protect(CLI::App& app);
 
 }  // namespace delpsc::app
