@@ -155,8 +155,15 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
   places_.push_back(place);
   const CellId hint = dt_.incident_cell(r.vertices[0]);
   dt_.insert(WeightedPoint::from(r.point), &changes_, hint);
-  if (dt_.status(id) != PointStatus::vertex)
-    throw std::logic_error("Mesher: an admissible surface point did not become a vertex");
+  if (dt_.status(id) != PointStatus::vertex) {
+    // The point is not on V_t after all: the dual edge's ends, orthocentres of nearly flat cells,
+    // were computed too inaccurately in doubles. Forget the point and stop offering this record.
+    ++stats_.rejected_inaccurate;
+    dt_.remove(id, &changes_);
+    places_[id] = {};
+    facets_.discard(slot);
+    return true;
+  }
   apply(changes_);
   return true;
 }

@@ -51,7 +51,8 @@ struct MesherStats {
   std::size_t insertions_size = 0;      ///< step 2(b)
   std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
   std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
-  std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
+  std::size_t swallowed = 0;
+  std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden            ///< unweighted points removed inside new balls
   std::size_t seeds = 0;
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <delpsc/kernel/constructions.h>
+
 namespace delpsc::refine {
 
 using delaunay::CellId;
@@ -29,6 +31,7 @@ std::uint32_t RestrictedFacets::new_record() {
   ++records_[s].stamp;
   records_[s].alive = true;
   records_[s].next = kNoFacet;
+  records_[s].discarded = false;
   ++live_;
   return s;
 }
@@ -59,8 +62,28 @@ void RestrictedFacets::forget(const Key& k, std::vector<PointId>& touched) {
   head_.erase(it);
 }
 
+// V_t lies on the line of points power-equidistant from t's three vertices: through t's own
+// orthocentre, perpendicular to t. A nearly flat cell (four almost coplanar vertices, common on
+// planar patches whose coordinates are rounded) has an orthocentre that double arithmetic puts
+// visibly off that line; projecting the ends back onto the line (computed from t alone, well
+// conditioned) keeps every hit power-equidistant from t's vertices, as size(t, σ) assumes.
+void RestrictedFacets::project_on_facet_line(const Key& k, delaunay::VoronoiEdge& e) const {
+  const WeightedPoint &a = dt_->point(k.a), &b = dt_->point(k.b), &c = dt_->point(k.c);
+  const auto centre = kernel::orthocentre(a, b, c);
+  if (!centre) return;
+  const Vec3 o = centre->point();
+  const Vec3 n = (b.point() - a.point()).cross(c.point() - a.point()).normalized();
+  if (!n.allFinite()) return;
+  e.source = o + (e.source - o).dot(n) * n;
+  if (e.is_ray)
+    e.direction = e.direction.dot(n) >= 0 ? n : Vec3(-n);
+  else
+    e.target = o + (e.target - o).dot(n) * n;
+}
+
 void RestrictedFacets::examine(Facet f, const Key& k, std::vector<PointId>& touched) {
-  const delaunay::VoronoiEdge e = dt_->dual(f);
+  delaunay::VoronoiEdge e = dt_->dual(f);
+  project_on_facet_line(k, e);
   if (e.is_ray)
     domain_->intersect_ray(e.source, e.direction, hits_);
   else
@@ -173,7 +196,7 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
 std::uint32_t RestrictedFacets::largest() {
   while (!heap_.empty()) {
     const auto [power, s, stamp] = heap_.top();
-    if (records_[s].alive && records_[s].stamp == stamp) return s;
+    if (records_[s].alive && records_[s].stamp == stamp && !records_[s].discarded) return s;
     heap_.pop();
   }
   return kNoFacet;

@@ -49,6 +49,7 @@ struct RestrictedFacet {
   std::uint32_t stamp = 0;            ///< changes whenever the slot is reused
   std::uint32_t next = kNoFacet;      ///< next record of the same triangle (other patches)
   bool alive = false;
+  bool discarded = false;             ///< skipped by largest() (see discard)
 };
 
 class RestrictedFacets {
@@ -73,6 +74,8 @@ class RestrictedFacets {
   }
   /// The live record of largest size, kNoFacet when there is none. Amortised O(log n).
   std::uint32_t largest();
+  /// Takes a record out of the largest() order (its point proved unusable) until it is recomputed.
+  void discard(std::uint32_t slot) { records_[slot].discarded = true; }
   /// Calls f(slot, record) for every live record.
   template <class F>
   void for_each(F&& f) const {
@@ -96,6 +99,7 @@ class RestrictedFacets {
   static Key key_of(std::array<PointId, 3> v);
 
   void forget(const Key& k, std::vector<PointId>& touched);
+  void project_on_facet_line(const Key& k, delaunay::VoronoiEdge& e) const;
   void examine(delaunay::Facet f, const Key& k, std::vector<PointId>& touched);
   std::uint32_t new_record();
   void mirror(delaunay::CellId c);
