@@ -48,33 +48,43 @@ inline bool finite_cell_conflict(const double* const q[4], const double* p, bool
                    : kn::insphere_perturbed(q[0], q[1], q[2], q[3], p)) > 0;
 }
 
-/// Appends to a scratch vector through a raw pointer and a local count (kept in registers), the
-/// vector being resized to its capacity up front and to the count at the end. reserve_more()
-/// before a burst of push()es keeps push() check-free.
+/// A growable array of trivially copyable items for scratch lists: unlike std::vector it never
+/// initialises its storage, and the hot loops append through a raw pointer with a local count
+/// (which stays in a register even while byte-sized marks, which may alias anything, are
+/// written) after reserving room for a burst of appends.
 template <class T>
-class GrowableList {
+class ScratchList {
  public:
-  explicit GrowableList(std::vector<T>& v) : v_(v) {
-    v_.resize(std::max<std::size_t>(v_.capacity(), 64));
-    data_ = v_.data();
-  }
-  ~GrowableList() { v_.resize(size_); }
-  GrowableList(const GrowableList&) = delete;
-  GrowableList& operator=(const GrowableList&) = delete;
-  void reserve_more(std::size_t k) {
-    if (size_ + k > v_.size()) {
-      v_.resize(2 * (size_ + k));
-      data_ = v_.data();
+  void clear() { size_ = 0; }
+  /// Makes room for `more` appends beyond the current size; returns the (possibly moved) data.
+  T* reserve_more(std::size_t more) {
+    if (size_ + more > capacity_) {
+      const std::size_t capacity = std::max<std::size_t>(2 * (size_ + more), 64);
+      auto data = std::make_unique_for_overwrite<T[]>(capacity);
+      std::copy(data_.get(), data_.get() + size_, data.get());
+      data_ = std::move(data);
+      capacity_ = capacity;
     }
+    return data_.get();
   }
-  void push(const T& x) { data_[size_++] = x; }
+  void set_size(std::size_t n) { size_ = n; }
+  void push_back(const T& x) {
+    reserve_more(1);
+    data_[size_++] = x;
+  }
   std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  std::size_t capacity() const { return capacity_; }
+  T* data() { return data_.get(); }
+  const T* data() const { return data_.get(); }
+  const T* begin() const { return data_.get(); }
+  const T* end() const { return data_.get() + size_; }
   const T& operator[](std::size_t i) const { return data_[i]; }
 
  private:
-  std::vector<T>& v_;
-  T* data_;
+  std::unique_ptr<T[]> data_;
   std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
 };
 
 }  // namespace
@@ -84,9 +94,9 @@ class GrowableList {
 struct RegularTriangulation::Scratch {
   std::vector<std::uint8_t> cell_mark;   // by CellId; all zero between operations
   std::vector<std::uint32_t> local_id;   // by PointId; all zero between operations
-  std::vector<CellId> conflict;          // conflict region, in discovery order
-  std::vector<CellId> rejected;          // neighbours tested and found not in conflict
-  std::vector<Facet> boundary;           // cavity boundary, as facets of conflict cells
+  ScratchList<CellId> conflict;          // conflict region, in discovery order
+  ScratchList<CellId> rejected;          // neighbours tested and found not in conflict
+  ScratchList<Facet> boundary;           // cavity boundary, as facets of conflict cells
   std::vector<CellId> created;           // cells made by the current operation
   std::vector<PointId> interior;         // vertices made redundant by the current insertion
   std::vector<PointId> relocate;         // hidden points whose cell was destroyed
@@ -354,22 +364,20 @@ void RegularTriangulation::build_first_tetrahedron(PointId a, PointId b, PointId
     std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
     cells_[ids[1 + i]].v = v;
   }
-  // Five cells: match their twenty facets by vertex sets.
-  for (int x = 0; x < 5; ++x)
-    for (int i = 0; i < 4; ++i)
-      for (int y = 0; y < 5; ++y) {
-        if (y == x) continue;
-        const auto& cx = cells_[ids[x]].v;
-        const auto& cy = cells_[ids[y]].v;
-        for (int j = 0; j < 4; ++j) {
-          int shared = 0;
-          for (int k = 0; k < 4; ++k)
-            if (k != i)
-              for (int l = 0; l < 4; ++l)
-                if (l != j && cx[k] == cy[l]) ++shared;
-          if (shared == 3) cells_[ids[x]].n[i] = make_link(ids[y], j);
-        }
-      }
+  // Finite cell facet i <-> infinite cell i facet i (the infinite vertex is opposite it there).
+  // Infinite cells i and j (i != j) share the facet made of the infinite vertex and the two
+  // finite vertices other than v_i and v_j; in cell i it is opposite v_j, in cell j opposite v_i.
+  const auto& f = cells_[ids[0]].v;
+  for (int i = 0; i < 4; ++i) {
+    cells_[ids[0]].n[i] = make_link(ids[1 + i], i);
+    cells_[ids[1 + i]].n[i] = make_link(ids[0], i);
+    for (int j = 0; j < 4; ++j) {
+      if (j == i) continue;
+      const int in_i = index_of(ids[1 + i], f[j]);  // v_j's slot in infinite cell i
+      const int in_j = index_of(ids[1 + j], f[i]);  // v_i's slot in infinite cell j
+      cells_[ids[1 + i]].n[in_i] = make_link(ids[1 + j], in_j);
+    }
+  }
   for (const PointId p : {a, b, c, d}) {
     status_[p] = PointStatus::vertex;
     point_cell_[p] = ids[0];
@@ -548,15 +556,29 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
   const Cell* const cells = cells_.data();
   const WeightedPoint* const points = points_.data();
   const bool weighted = weighted_;
-  GrowableList<CellId> conflict(s.conflict), rejected(s.rejected);
-  GrowableList<Facet> boundary(s.boundary);
+  s.conflict.clear();
+  s.rejected.clear();
+  s.boundary.clear();
+  CellId* conflict = s.conflict.reserve_more(64);
+  CellId* rejected = s.rejected.reserve_more(64);
+  Facet* boundary = s.boundary.reserve_more(64);
+  std::size_t nc = 0, nr = 0, nf = 0;
   mark[start] = kInConflict;
-  conflict.push(start);
-  for (std::size_t k = 0; k < conflict.size(); ++k) {
+  conflict[nc++] = start;
+  for (std::size_t k = 0; k < nc; ++k) {
     const CellId x = conflict[k];
-    conflict.reserve_more(4);
-    rejected.reserve_more(4);
-    boundary.reserve_more(4);
+    if (nc + 4 > s.conflict.capacity()) {
+      s.conflict.set_size(nc);
+      conflict = s.conflict.reserve_more(4);
+    }
+    if (nr + 4 > s.rejected.capacity()) {
+      s.rejected.set_size(nr);
+      rejected = s.rejected.reserve_more(4);
+    }
+    if (nf + 4 > s.boundary.capacity()) {
+      s.boundary.set_size(nf);
+      boundary = s.boundary.reserve_more(4);
+    }
     for (int i = 0; i < 4; ++i) {
       const CellId y = cells[x].n[i] >> 2;
       const std::uint8_t m = mark[y];
@@ -574,15 +596,18 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
         }
         if (in) {
           mark[y] = kInConflict;
-          conflict.push(y);
+          conflict[nc++] = y;
           continue;
         }
         mark[y] = kNotInConflict;
-        rejected.push(y);
+        rejected[nr++] = y;
       }
-      boundary.push({x, i});
+      boundary[nf++] = {x, i};
     }
   }
+  s.conflict.set_size(nc);
+  s.rejected.set_size(nr);
+  s.boundary.set_size(nf);
 }
 
 // Bowyer–Watson step: replace the conflict region by the cells joining p to its boundary facets.
