@@ -22,13 +22,14 @@
 // Indexes kept up to date by every edit:
 //  - per curve a doubly linked list of its interior balls (O(1) insertion and removal);
 //  - a lazy max-heap of radii: largest() is O(1) amortised (dead entries are dropped when met);
-//  - a hierarchical hash grid (one uniform grid per power of two of the radius, each ball in
-//    the one cell of its level holding its centre): balls_meeting(c, r) visits per level the
-//    cells within r + cell size of c, or the level's whole list when that is fewer balls, so a
-//    query costs O(levels * (cells + hits)) and never a scan of all balls unless that is cheaper.
-//    Insertion and removal are O(1) expected.
-// Memory: about 130 bytes per ball ever created (dead balls keep their record, so ids stay
-// valid for reading).
+//  - a hierarchical hash grid (ball_grid.h: one grid per power of two of the radius, each at a
+//    few resolutions): balls_meeting(c, r) costs O(levels * (27 + candidates)), never a scan of
+//    all balls unless that is cheaper.
+// An edit costs O(log n) for the heap plus O(1) expected for the grid and the lists.
+// Memory: 64 bytes per ball ever created (dead balls keep their record, so ids stay valid for
+// reading) plus roughly 100 per live ball for the index and the heap.
+// Threads: the const members may be called concurrently, except largest() (it drops dead heap
+// entries).
 #pragma once
 
 #include <cstdint>
