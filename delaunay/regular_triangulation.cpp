@@ -109,8 +109,8 @@ struct RegularTriangulation::Scratch {
   std::vector<CellId> star;           // cells incident to the removed vertex
   std::vector<PointId> link_points;   // link vertex number (in `link`) -> PointId
   SmallMap local_of;                  // PointId -> link vertex number
-  SmallMap facet_map;                 // oriented facet of `link` -> link cell facet
-  SmallMap outer_of;                  // hole boundary facet of `link` -> outside facet here
+  SmallMap outer_of;                  // hole boundary facet (oriented link key) -> outside facet
+  std::vector<std::uint32_t> hole_outer;  // per hole cell and facet: outside facet, or none
   SmallMap new_of_star;               // flat removal: star cell -> its replacement
   std::vector<CellId> hole;           // cells of `link` inside the hole
   std::vector<CellId> new_of;         // cell of `link` -> new cell here
@@ -200,15 +200,15 @@ std::size_t RegularTriangulation::memory_bytes() const {
   if (scratch_) {
     const Scratch& s = *scratch_;
     bytes += sizeof(Scratch) + s.cell_mark.capacity() +
-             (s.local_id.capacity() + s.edge_table.capacity() + 4 * s.created_local.capacity()) *
+             (s.local_id.capacity() + s.edge_table.capacity() + 4 * s.created_local.capacity() +
+              s.hole_outer.capacity()) *
                  sizeof(std::uint32_t) +
              (s.conflict.capacity() + s.rejected.capacity() + s.created.capacity() +
               s.star.capacity() + s.hole.capacity() + s.new_of.capacity()) * sizeof(CellId) +
              s.boundary.capacity() * sizeof(Facet) +
              (s.interior.capacity() + s.relocate.capacity() + s.link_points.capacity() +
               s.reinsert.capacity() + s.boundary_vertices.capacity()) * sizeof(PointId) +
-             s.edges.memory_bytes() + s.local_of.memory_bytes() + s.facet_map.memory_bytes() +
-             s.outer_of.memory_bytes() + s.new_of_star.memory_bytes();
+             s.edges.memory_bytes() + s.local_of.memory_bytes() + s.outer_of.memory_bytes() + s.new_of_star.memory_bytes();
     if (s.link) bytes += s.link->memory_bytes();
   }
   return bytes;
@@ -587,12 +587,19 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
         // Inline fast path for the common case: a finite cell, no replaced vertex.
         const Cell& cy = cells[y];
         bool in;
-        if (replaced == kNoPoint && !has_infinite_vertex(cy.v)) {
+        if (replaced != kNoPoint) {
+          in = in_conflict(y, p, replaced);
+        } else if (!has_infinite_vertex(cy.v)) {
           const double* q[4] = {points[cy.v[0]].data(), points[cy.v[1]].data(),
                                 points[cy.v[2]].data(), points[cy.v[3]].data()};
           in = finite_cell_conflict(q, p, weighted);
         } else {
-          in = in_conflict(y, p, replaced);
+          // Infinite cell: p strictly beyond its hull facet decides; a tie (p in the facet's
+          // plane) goes to in_conflict's power-circle rule.
+          const double* q[4];
+          for (int j = 0; j < 4; ++j) q[j] = cy.v[j] == kInfiniteVertex ? p : points[cy.v[j]].data();
+          const int o = kn::orient3d(q[0], q[1], q[2], q[3]);
+          in = o != 0 ? o > 0 : in_conflict(y, p, replaced);
         }
         if (in) {
           mark[y] = kInConflict;
@@ -834,64 +841,68 @@ bool RegularTriangulation::remove_vertex(PointId v, ChangeSet* changes, std::str
 
 // The cells of the regular triangulation of the remaining points that lie in the hole are the
 // cells of the regular triangulation of the link vertices that lie in the hole (Devillers 2002;
-// CGAL's Triangulation_3::remove_3D): they are regular for the link vertices, and the triangulation
-// is unique under the perturbation. Each hole boundary facet, oriented as seen from v, is a facet
-// of the link triangulation seen from a cell on v's side; those cells and everything reachable
-// from them without crossing a boundary facet are copied into the hole.
+// CGAL's Triangulation_3::remove_3D): they are regular for the link vertices, and the
+// triangulation is unique under the perturbation. v's position is strictly inside the hole (or,
+// for a hull vertex, beyond the link's hull facets that replace its star), so the link cell found
+// by walking to it is a hole cell; the others are reached from it without crossing a hole
+// boundary facet. Those facets are recognised by their oriented vertex triple, as v sees it.
 void RegularTriangulation::fill_hole_from_link(PointId v) {
   Scratch& s = scratch();
   const RegularTriangulation& link = *s.link;
   constexpr std::uint32_t kLocalInfinite = kFacetKeyMask;
   if (s.link_points.size() >= kLocalInfinite)
     throw std::length_error("RegularTriangulation::remove: vertex degree too large");
+  // Link vertex numbers are the link triangulation's point ids.
   auto local = [&](PointId w) -> std::uint32_t {
     return w == kInfiniteVertex ? kLocalInfinite : *s.local_of.find(w);
   };
-
-  s.facet_map.reset(4 * link.number_of_cells());
-  for (CellId t = 0; t < link.cell_capacity(); ++t) {
-    if (!link.is_cell_alive(t)) continue;
-    const auto& tv = link.cells_[t].v;
-    auto lid = [&](int k) { return tv[k] == kInfiniteVertex ? kLocalInfinite : tv[k]; };
-    for (int f = 0; f < 4; ++f) {
-      const int* fs = kFacetSlots[f];
-      s.facet_map.insert(facet_key(lid(fs[0]), lid(fs[1]), lid(fs[2])), make_link(t, f));
-    }
-  }
+  auto link_local = [&](PointId w) -> std::uint32_t { return w == kInfiniteVertex ? kLocalInfinite : w; };
 
   s.outer_of.reset(s.star.size());
-  s.hole.clear();
-  s.new_of.assign(link.cell_capacity(), kNoCell);
-  constexpr CellId kReached = kNoCell - 1;
   for (const CellId x : s.star) {
     const Cell& cell = cells_[x];
     const int k = index_of(x, v);
     const int* fs = kFacetSlots[k];
-    const std::uint32_t* t = s.facet_map.find(
-        facet_key(local(cell.v[fs[0]]), local(cell.v[fs[1]]), local(cell.v[fs[2]])));
-    if (!t)
-      throw std::logic_error("RegularTriangulation::remove: a hole facet is missing from the link");
-    s.outer_of.insert(*t, cell.n[k]);
-    if (s.new_of[*t >> 2] == kNoCell) {
-      s.new_of[*t >> 2] = kReached;
-      s.hole.push_back(*t >> 2);
-    }
+    s.outer_of.insert(facet_key(local(cell.v[fs[0]]), local(cell.v[fs[1]]), local(cell.v[fs[2]])),
+                      cell.n[k]);
   }
-  for (std::size_t k = 0; k < s.hole.size(); ++k) {
-    const CellId t = s.hole[k];
+
+  constexpr std::uint32_t kInside = 0xFFFFFFFFu;
+  s.hole.clear();
+  s.hole_outer.clear();
+  s.new_of.assign(link.cell_capacity(), kNoCell);
+  const CellId seed = link.walk(points_[v].data(), link.valid_start(kNoCell));
+  s.new_of[seed] = 0;
+  s.hole.push_back(seed);
+  std::size_t boundary_found = 0;
+  for (std::size_t h = 0; h < s.hole.size(); ++h) {
+    const CellId t = s.hole[h];
+    const auto& tv = link.cells_[t].v;
     for (int f = 0; f < 4; ++f) {
-      if (s.outer_of.find(make_link(t, f))) continue;
+      const int* fs = kFacetSlots[f];
+      const std::uint32_t* outer =
+          s.outer_of.find(facet_key(link_local(tv[fs[0]]), link_local(tv[fs[1]]), link_local(tv[fs[2]])));
+      if (outer) {
+        s.hole_outer.push_back(*outer);
+        ++boundary_found;
+        continue;
+      }
+      s.hole_outer.push_back(kInside);
       const CellId u = link.neighbour(t, f);
       if (s.new_of[u] == kNoCell) {
-        s.new_of[u] = kReached;
+        s.new_of[u] = static_cast<CellId>(s.hole.size());
         s.hole.push_back(u);
       }
     }
   }
+  if (boundary_found != s.star.size())
+    throw std::logic_error("RegularTriangulation::remove: the link triangulation does not fit the hole");
 
+  for (CellId& n : s.new_of) n = kNoCell;
   for (const CellId t : s.hole) s.new_of[t] = new_cell();
   s.created.clear();
-  for (const CellId t : s.hole) {
+  for (std::size_t h = 0; h < s.hole.size(); ++h) {
+    const CellId t = s.hole[h];
     const CellId n = s.new_of[t];
     Cell& cell = cells_[n];
     for (int k = 0; k < 4; ++k) {
@@ -899,9 +910,10 @@ void RegularTriangulation::fill_hole_from_link(PointId v) {
       cell.v[k] = lv == kInfiniteVertex ? kInfiniteVertex : s.link_points[lv];
     }
     for (int f = 0; f < 4; ++f) {
-      if (const std::uint32_t* outer = s.outer_of.find(make_link(t, f))) {
-        cell.n[f] = *outer;
-        cells_[*outer >> 2].n[*outer & 3u] = make_link(n, f);
+      const std::uint32_t outer = s.hole_outer[4 * h + static_cast<std::size_t>(f)];
+      if (outer != kInside) {
+        cell.n[f] = outer;
+        cells_[outer >> 2].n[outer & 3u] = make_link(n, f);
       } else {
         cell.n[f] = make_link(s.new_of[link.neighbour(t, f)], link.mirror_index(t, f));
       }
