@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <limits>
+
+#include <delpsc/kernel/constructions.h>
 
 namespace delpsc::protect {
 
@@ -51,6 +54,55 @@ void check_corners(const BallSet& balls, BallCheck& check, Report& report) {
   }
 }
 
+// Distance from p to the curve piece [s0, s1] (the curve's view: may pass a closed curve's
+// corner), through the polyline pieces it covers. O(log n + pieces).
+double distance_to_piece(const Complex& complex, std::uint32_t c, double s0, double s1, const Vec3& p) {
+  const auto params = complex.curve_parameters(c);
+  const double length = complex.curves[c].length;
+  double best = std::numeric_limits<double>::infinity();
+  // A closed curve's piece may run over its corner at either end: look one turn either way.
+  const int turns = complex.curves[c].closed ? 1 : 0;
+  for (int turn = -turns; turn <= turns; ++turn) {
+    const double shift = turn * length;
+    const double lo = std::max(s0, shift), hi = std::min(s1, shift + length);
+    if (lo > hi) continue;
+    // Pieces [params[i], params[i+1]] (shifted) overlapping [lo, hi].
+    std::size_t i = static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), lo - shift) - params.begin());
+    i = i > 0 ? i - 1 : 0;
+    for (; i + 1 < params.size() && params[i] + shift <= hi; ++i) {
+      const double a = std::max(lo, params[i] + shift), b = std::min(hi, params[i + 1] + shift);
+      if (a > b) continue;
+      const auto q = kernel::closest_point_on_segment(p, complex.point_at(c, a), complex.point_at(c, b));
+      best = std::min(best, (q.point - p).norm());
+    }
+  }
+  return best;
+}
+
+// C3 on one curve: balls of the whole set inside which some point of seg_σ(b) lies, b's
+// neighbours excepted.
+void check_c3(const BallSet& balls, std::uint32_t c, const std::vector<BallOnCurve>& seq,
+              const std::vector<CurveInterval>& segs, BallCheck& check, Report& report) {
+  const Complex& complex = balls.complex();
+  std::vector<BallId> near;
+  for (std::size_t i = 0; i < seq.size(); ++i) {
+    const Ball& b = balls[seq[i].id];
+    const std::vector<BallId> adjacent = balls.neighbours(seq[i].id);
+    double s0 = segs[i].s0, s1 = segs[i].s1;
+    if (!complex.curves[c].closed) s0 = std::max(s0, 0.0), s1 = std::min(s1, complex.curves[c].length);
+    // Any ball meeting seg_σ(b) meets b.
+    near.clear();
+    balls.balls_meeting(b.centre, b.radius, near);
+    for (const BallId other : near) {
+      if (other == seq[i].id || std::find(adjacent.begin(), adjacent.end(), other) != adjacent.end()) continue;
+      const Ball& o = balls[other];
+      if (distance_to_piece(complex, c, s0, s1, o.centre) < o.radius * (1 - kCheckTolerance))
+        report.add(check.c3, "C3 (information): curve %u: ball %u (r=%.6g) holds a point of seg of ball %u", c, other,
+                   o.radius, seq[i].id);
+    }
+  }
+}
+
 // One curve: its sequence (C1), its adjacent pairs (C2, C3.a), the union of its segments.
 void check_curve(const BallSet& balls, std::uint32_t c, BallCheck& check, Report& report) {
   const Complex& complex = balls.complex();
@@ -83,6 +135,8 @@ void check_curve(const BallSet& balls, std::uint32_t c, BallCheck& check, Report
       report.add(check.c3a, "C3.a: curve %u: seg of ball %u (r=%.6g) holds the centre of %u at curve distance %.6g",
                  c, seq[i + 1].id, b.radius, seq[i].id, seq[i + 1].s - seq[i].s);
   }
+
+  check_c3(balls, c, seq, segs, check, report);
 
   // Coverage: sweep the segments by their start.
   std::sort(segs.begin(), segs.end(), [](const CurveInterval& x, const CurveInterval& y) { return x.s0 < y.s0; });

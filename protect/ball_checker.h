@@ -19,6 +19,11 @@
 //       with corner balls with which it shares no curve.
 //  coverage  every point of every curve lies in seg_σ(b) of some ball of its sequence (the
 //       union of the segments, clamped to [0, length], is [0, length]).
+//  C3   (counted for information, not part of ok(): the paper replaces it by C3.a and C3.b,
+//       which imply it once the balls are small, Lemma 2.3) no point of seg_σ(b) lies inside
+//       (open ball, same slack) a ball not adjacent to b. Lemma 2.1, on which the mesher's
+//       disk condition rests, needs it. Found exactly touching in a few cases where Cover's
+//       steps land on rational multiples of α on straight curves; never inside so far.
 //
 // Metric comparisons (C2, C3.a) allow a relative slack of kCheckTolerance for the rounding of
 // the constructed centres; C3.b and coverage are exact comparisons of the doubles.
@@ -38,6 +43,7 @@ inline constexpr double kCheckTolerance = 1e-9;
 /// Violations found, by condition, and the first few described in words.
 struct BallCheck {
   std::size_t c1 = 0, c2 = 0, c3a = 0, c3b = 0, coverage = 0;
+  std::size_t c3 = 0;  ///< informational (see above); not part of ok()
   std::vector<std::string> problems;  ///< at most the requested number of lines
   bool ok() const { return c1 + c2 + c3a + c3b + coverage == 0; }
 };

@@ -143,3 +143,37 @@ TEST_CASE("checker: coverage and messages") {
   CHECK(check.problems.size() == 3);  // capped at the requested count
   CHECK_FALSE(check.ok());
 }
+
+TEST_CASE("checker: C3 itself, counted apart: a thin loop whose two sides face each other") {
+  // The outline of a 1 x 0.1 rectangle sheet as one closed curve of length 2.2 (no turning
+  // corners). Fifteen balls of radius 0.12 every 2.2/15 = 0.147 along it satisfy C1, C2 (0.147
+  // <= 0.12 + 6 (0.12) / 7), C3.a (a neighbour is inside only across a 90° turn, 0.104 away
+  // in space but 0.147 >= 8 (0.12) / 7 along the curve), C3.b (one curve) and cover it; yet a
+  // ball on one long side reaches 0.066 either way along the other side, 0.1 away, into the
+  // segments of the balls there: C3 fails while C3.a and C3.b hold - Lemma 2.3 needs small balls.
+  io::TriangleSoup soup;
+  const int n = 10;
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= n; ++i) soup.vertices.emplace_back(double(i) / n, 0.1 * j, 0.0);
+  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+    const std::uint32_t a = i, b = i + 1, c = i + 1 + n + 1, d = i + n + 1;
+    soup.triangles.push_back({a, b, c});
+    soup.triangles.push_back({a, c, d});
+  }
+  protect::ComplexOptions options;
+  options.corner_angle_degrees = 180;
+  const protect::Complex loop = protect::build_complex(soup, options);
+  REQUIRE(loop.curve_count() == 1);
+  REQUIRE(loop.curves[0].closed);
+  REQUIRE(loop.curves[0].length == doctest::Approx(2.2));
+  BallSet balls(loop);
+  balls.set_corner_ball(0, 0.12);
+  BallId after = kNoBall;
+  for (int k = 1; k <= 14; ++k) after = balls.insert_interior(0, after, loop.curves[0].length * k / 15, 0.12);
+  const protect::BallCheck thin = protect::check_balls(balls);
+  for (const auto& p : thin.problems) INFO(p);
+  CHECK(thin.ok());
+  CHECK(thin.c3 > 0);
+  // The hand-made set on the square, whose sides are 1 apart, has none.
+  CHECK(protect::check_balls(good_set()).c3 == 0);
+}
