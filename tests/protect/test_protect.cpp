@@ -140,6 +140,8 @@ static void refine_largest(const std::string& name, int steps, const protect::Pr
     }
     if (corner) CHECK(balls.corner_ball(balls[b].corner) != b);
 
+    // The full check after every call on small sets, every fifth call on large ones.
+    if (balls.size() > 5000 && step % 5 != 4 && step + 1 != steps) continue;
     const protect::BallCheck check = protect::check_balls(balls);
     for (const auto& p : check.problems) INFO(p);
     REQUIRE(check.ok());
