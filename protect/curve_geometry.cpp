@@ -80,7 +80,9 @@ CurveInterval Complex::segment_in_ball(std::uint32_t c, double s, double r) cons
       }
       const Vec3& b = vertices[poly[v]];
       const double sb = params[v] + offset;
-      if (std::abs(sb - s) >= length) return std::nullopt;  // a full turn inside the ball
+      // A full turn inside the ball: only a closed curve can come round (on an open one, reaching
+      // the far end is not a turn, and that vertex still has to be tested).
+      if (curve.closed && std::abs(sb - s) >= length) return std::nullopt;
       if (!inside(b)) {
         const kernel::SphereHits hits = kernel::intersect_segment_sphere(a, b, ball);
         const double t = hits.count > 0 ? hits.t[hits.count - 1] : 0.0;

@@ -106,6 +106,23 @@ TEST_CASE("open curves: seg stops at the curve's ends") {
   }
 }
 
+TEST_CASE("open single-segment curve: a ball at one end does not swallow the far end") {
+  // make_cube(1): every curve is one polyline segment of length 1. Walking from s = 0 reaches
+  // the far vertex at parameter = length; that vertex lies outside a ball of radius 0.3, so the
+  // piece inside is [0, 0.3], not the whole curve (a regression: the full-turn test of closed
+  // curves used to fire on open ones).
+  const Complex c = build_complex(io::make_cube(1));
+  for (std::uint32_t k = 0; k < c.curve_count(); ++k) {
+    REQUIRE(c.curves[k].length == doctest::Approx(1.0));
+    const auto from_start = c.segment_in_ball(k, 0.0, 0.3);
+    CHECK_FALSE(from_start.whole);
+    CHECK(from_start.s1 == doctest::Approx(0.3));
+    const auto from_end = c.segment_in_ball(k, 1.0, 0.3);
+    CHECK_FALSE(from_end.whole);
+    CHECK(from_end.s0 == doctest::Approx(0.7));
+  }
+}
+
 TEST_CASE("seg of a ball on curved polylines: ends on the sphere, inside between") {
   // The rims of a 60-gon cylinder as closed curves; and cut into open arcs by two vertical user
   // polylines on the side, at angles 0 and 90 degrees.
