@@ -1,6 +1,7 @@
 // `delpsc features`: the piecewise smooth complex found in a polygon model (issue 4).
 #include <chrono>
 #include <delpsc/io/mesh_writer.h>
+#include <delpsc/io/preview_svg.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/complex_mesh.h>
 #include <stdexcept>
@@ -15,6 +16,7 @@ namespace {
 struct FeaturesOptions {
   std::string input;
   std::string output;
+  std::string preview;
   double angle = 60;
   double corner_angle = 60;
 };
@@ -22,6 +24,8 @@ struct FeaturesOptions {
 int run(const FeaturesOptions& o, const GlobalOptions& g) {
   if (!o.output.empty() && !io::mesh_format_from_path(o.output))
     throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .vtu, .mesh, .off, .obj, .ply or .stl)"};
+  if (!o.preview.empty() && !o.preview.ends_with(".svg"))
+    throw Failure{kBadInput, "--preview " + o.preview + ": the preview is an SVG picture (name it *.svg)"};
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
   protect::ComplexOptions options;
@@ -50,9 +54,18 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
       std::fprintf(stderr, "patch %zu: euler=%d boundary_loops=%u\n", p,
                    complex.patches[p].euler_characteristic, complex.patches[p].boundary_loops);
   }
-  if (!o.output.empty()) {
+  if (!o.output.empty() || !o.preview.empty()) {
+    const io::SurfaceMesh mesh = protect::to_surface_mesh(complex);
     try {
-      io::write_mesh(o.output, protect::to_surface_mesh(complex));
+      if (!o.output.empty()) io::write_mesh(o.output, mesh);
+      if (!o.preview.empty()) {
+        io::PreviewOptions preview;
+        preview.title = o.input + ": " + std::to_string(complex.corner_count()) + " corners, " +
+                        std::to_string(complex.curve_count()) + " curves, " +
+                        std::to_string(complex.patch_count()) + " patches (feature angle " +
+                        std::to_string(static_cast<int>(o.angle)) + "°)";
+        io::write_preview_svg(o.preview, mesh, preview);
+      }
     } catch (const io::Error& e) {
       throw Failure{kBadInput, e.what()};
     }
@@ -73,10 +86,13 @@ Runner register_features(CLI::App& app) {
       ->check(CLI::Range(0.0, 180.0));
   app.add_option("-o,--output", o->output,
                  "Write the complex (patches and curves labelled): .vtu for ParaView, .mesh (Medit)");
+  app.add_option("--preview", o->preview,
+                 "Draw the complex to an SVG picture: patches coloured and shaded, curves and corners dark");
   app.footer(
       "Prints key=value lines: triangles, zero_area_triangles, corners, curves, closed_curves, "
       "patches, patches_without_boundary, seconds.\n\nExample:\n"
-      "  delpsc features fandisk.off --angle 60 -o fandisk-features.vtu");
+      "  delpsc features fandisk.off --angle 60 -o fandisk-features.vtu\n"
+      "  delpsc features samples/part.off --preview part-features.svg");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 
