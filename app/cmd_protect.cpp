@@ -1,8 +1,6 @@
 // `delpsc protect`: the protecting balls of a polygon model's feature curves (issue 5).
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -13,6 +11,7 @@
 
 #include "command.h"
 #include "model_input.h"
+#include "size_option.h"
 
 namespace delpsc::app {
 
@@ -27,19 +26,6 @@ struct ProtectCommandOptions {
   std::string vtu_path;
   bool check = false;
 };
-
-/// λ from "--size S": S absolute, or "P%" of the bounding-box diagonal. Throws Failure.
-double parse_size(const std::string& text, double diagonal) {
-  std::string number = text;
-  const bool percent = !number.empty() && number.back() == '%';
-  if (percent) number.pop_back();
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(number.c_str(), &end);
-  if (number.empty() || end != number.c_str() + number.size() || errno == ERANGE || !std::isfinite(value) || !(value > 0))
-    throw Failure{kBadInput, "--size " + text + ": expected a positive length or a percentage of the diagonal (e.g. 0.05 or 1%)"};
-  return percent ? value / 100 * diagonal : value;
-}
 
 bool ends_with_vtu(const std::string& path) {
   if (path.size() < 4) return false;

@@ -47,5 +47,6 @@ Runner register_triangulate(CLI::App& app);
 Runner register_features(CLI::App& app);
 Runner register_info(CLI::App& app);
 Runner register_protect(CLI::App& app);
+Runner register_mesh(CLI::App& app);
 
 }  // namespace delpsc::app

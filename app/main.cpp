@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add("info", "Model statistics: counts, bounding box, defects", register_info);
   add("features", "Find the corners, curves and patches of a polygon model", register_features);
   add("protect", "Protect the feature curves with balls (DelPSC Protect)", register_protect);
+  add("mesh", "Mesh a polygon model with DelPSC: protecting balls, then restricted Delaunay refinement", register_mesh);
   add("triangulate", "Build the 3D regular triangulation of a weighted point set", register_triangulate);
 
   try {

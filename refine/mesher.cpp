@@ -240,7 +240,9 @@ void Mesher::run() {
     stats_.message = "the triangulation did not reach dimension 3";
     return;
   }
-  for (;;) {
+  for (std::size_t step = 1;; ++step) {
+    if (options_.progress && step % std::max<std::size_t>(options_.progress_every, 1) == 0)
+      options_.progress(domain_vertex_count());
     if (options_.max_vertices > 0 && domain_vertex_count() >= options_.max_vertices) {
       stats_.stopped_at_max_vertices = true;
       stats_.message = "stopped at --max-vertices " + std::to_string(options_.max_vertices);

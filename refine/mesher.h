@@ -24,6 +24,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -43,6 +44,10 @@ struct MesherOptions {
   double facet_size = 0;          ///< λ of step 2(b), absolute (> 0)
   std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
+  /// Called with the number of domain vertices every `progress_every` steps of the loop (for a
+  /// progress line; empty: never).
+  std::function<void(std::size_t vertices)> progress;
+  std::size_t progress_every = 2000;
 };
 
 struct MesherStats {
@@ -51,8 +56,8 @@ struct MesherStats {
   std::size_t insertions_size = 0;      ///< step 2(b)
   std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
   std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
-  std::size_t swallowed = 0;
-  std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden            ///< unweighted points removed inside new balls
+  std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
+  std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)
