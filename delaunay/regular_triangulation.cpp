@@ -579,10 +579,12 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
       s.boundary.set_size(nf);
       boundary = s.boundary.reserve_more(4);
     }
+    // One data-dependent branch per neighbour (untested or not); the lists grow branch-free.
+    // The marks and the test outcomes are close to random, and mispredicted branches cost more
+    // here than the predicates' arithmetic.
     for (int i = 0; i < 4; ++i) {
       const CellId y = cells[x].n[i] >> 2;
-      const std::uint8_t m = mark[y];
-      if (m == kInConflict) continue;
+      std::uint8_t m = mark[y];
       if (m == 0) {
         // Inline fast path for the common case: a finite cell, no replaced vertex.
         const Cell& cy = cells[y];
@@ -601,15 +603,15 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
           const int o = kn::orient3d(q[0], q[1], q[2], q[3]);
           in = o != 0 ? o > 0 : in_conflict(y, p, replaced);
         }
-        if (in) {
-          mark[y] = kInConflict;
-          conflict[nc++] = y;
-          continue;
-        }
-        mark[y] = kNotInConflict;
-        rejected[nr++] = y;
+        m = in ? kInConflict : kNotInConflict;
+        mark[y] = m;
+        conflict[nc] = y;
+        nc += in;
+        rejected[nr] = y;
+        nr += !in;
       }
-      boundary[nf++] = {x, i};
+      boundary[nf] = {x, i};
+      nf += m == kNotInConflict;
     }
   }
   s.conflict.set_size(nc);
@@ -623,8 +625,8 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
 // and its facet index toward the outside is unchanged. The new cells are glued to each other
 // along the boundary edges: the new facet through p and boundary edge (a, b), oriented as seen
 // from its cell, reads (p, a, b) in one cell and (p, b, a) in the other. The boundary vertices
-// are numbered 1..m (the infinite vertex 0) and a first pass files every new facet under its
-// directed edge in an (m+1)^2 table; a second pass reads the reversed edge. No search, no
+// are numbered 1, 2, ... (the infinite vertex 0) and a first pass files every new facet under its
+// directed edge in a small square table; a second pass reads the reversed edge. No search, no
 // branch on "found" (Marot, Pellerin & Remacle, "One machine, one minute, three billion
 // tetrahedra", IJNME 117, 2019, use the same idea).
 void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
@@ -639,38 +641,6 @@ void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
   const Facet* const boundary = s.boundary.data();
   const CellId* const created = s.created.data();
 
-  // Number the boundary vertices 1..m-1 (the infinite vertex is 0: it reads local[np], which is
-  // always 0); each vertex gets, as incident cell, the first new cell it is seen in (its old
-  // cells may all be destroyed).
-  const std::size_t np = points_.size();
-  if (s.local_id.size() < np + 1) s.local_id.resize(np + 1, 0);
-  std::uint32_t* const local = s.local_id.data();
-  auto slot = [np](PointId v) -> std::size_t { return v == kInfiniteVertex ? np : v; };
-  s.boundary_vertices.clear();
-  for (std::size_t t = 0; t < nb; ++t) {
-    const Cell& old = cells[boundary[t].cell];
-    for (const int k : kFacetSlots[boundary[t].index]) {
-      const PointId v = old.v[k];
-      if (v != kInfiniteVertex && local[v] == 0) {
-        s.boundary_vertices.push_back(v);
-        local[v] = static_cast<std::uint32_t>(s.boundary_vertices.size());
-        point_cell[v] = created[t];
-      }
-    }
-  }
-  // Vertices all of whose cells are in conflict (none on the cavity boundary) become redundant.
-  // Only weights can cause that (unweighted points are never redundant, duplicates aside), so
-  // unweighted inputs skip the search.
-  constexpr std::uint32_t kInteriorVertex = 0xFFFFFFFFu;
-  s.interior.clear();
-  if (weighted_)
-    for (const CellId x : s.conflict)
-      for (const PointId v : cells[x].v)
-        if (v != kInfiniteVertex && local[v] == 0) {
-          local[v] = kInteriorVertex;
-          s.interior.push_back(v);
-        }
-
   // Hidden points of the doomed cells, taken before their slots are recycled.
   s.relocate.clear();
   if (hidden_storage_)
@@ -679,21 +649,48 @@ void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
       cell_hidden_[x] = kNoPoint;
     }
 
-  // Pass 1: the star of p, glued to the outside; every inner facet filed under its edge.
-  const std::size_t m = s.boundary_vertices.size() + 1;
+  // The cavity boundary is a triangulated sphere: V = F/2 + 2 vertices, so local numbers (the
+  // infinite vertex 0, the others 1, 2, ... on first sight) stay below F/2 + 3.
+  const std::size_t m = nb / 2 + 3;
   const bool direct = m <= kDirectEdgeTable;
   if (direct) {
     if (s.edge_table.size() < m * m) s.edge_table.resize(m * m);
   } else {
     s.edges.reset(2 * nb);
   }
+  if (s.local_id.size() < points_.size()) s.local_id.resize(points_.size(), 0);
+  std::uint32_t* const local = s.local_id.data();
   std::uint32_t* const table = s.edge_table.data();
+  s.created_local.resize(nb);
+  auto* const lids = s.created_local.data();
+  s.boundary_vertices.clear();
   point_cell[id] = created[0];
   std::size_t infinite_created = 0;
+
+  // Pass 1: the star of p, glued to the outside; every inner facet filed under its edge. Each
+  // boundary vertex gets, as incident cell, the first new cell it is seen in (its old cells may
+  // all be destroyed).
   for (std::size_t t = 0; t < nb; ++t) {
     const Cell& old = cells[boundary[t].cell];
     const int i = boundary[t].index;
     const CellId n = created[t];
+    auto& lid = lids[t];
+    lid[i] = 0;
+    for (const int k : kFacetSlots[i]) {
+      const PointId v = old.v[k];
+      if (v == kInfiniteVertex) {
+        lid[k] = 0;
+        continue;
+      }
+      if (local[v] == 0) {
+        s.boundary_vertices.push_back(v);
+        if (s.boundary_vertices.size() >= m)
+          throw std::logic_error("RegularTriangulation: cavity boundary is not a sphere");
+        local[v] = static_cast<std::uint32_t>(s.boundary_vertices.size());
+        point_cell[v] = n;
+      }
+      lid[k] = local[v];
+    }
     Cell& cell = cells[n];
     cell.v = old.v;
     cell.v[i] = id;
@@ -705,24 +702,33 @@ void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
       ++infinite_created;
     }
     for (const auto& [j, ka, kb] : kInnerFacets[i]) {
-      const std::size_t a = local[slot(cell.v[ka])], b = local[slot(cell.v[kb])];
       if (direct)
-        table[a * m + b] = make_link(n, j);
+        table[lid[ka] * m + lid[kb]] = make_link(n, j);
       else
-        s.edges.insert(edge_key(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)),
-                       make_link(n, j));
+        s.edges.insert(edge_key(lid[ka], lid[kb]), make_link(n, j));
     }
   }
   infinite_cell_count_ += infinite_created;
   // Pass 2: each inner facet meets the facet filed under the reversed edge.
   for (std::size_t t = 0; t < nb; ++t) {
     Cell& cell = cells[created[t]];
-    for (const auto& [j, ka, kb] : kInnerFacets[boundary[t].index]) {
-      const std::size_t a = local[slot(cell.v[ka])], b = local[slot(cell.v[kb])];
-      cell.n[j] = direct ? table[b * m + a]
-                         : *s.edges.find(edge_key(static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a)));
-    }
+    const auto& lid = lids[t];
+    for (const auto& [j, ka, kb] : kInnerFacets[boundary[t].index])
+      cell.n[j] = direct ? table[lid[kb] * m + lid[ka]] : *s.edges.find(edge_key(lid[kb], lid[ka]));
   }
+
+  // Vertices all of whose cells are in conflict (none on the cavity boundary) become redundant.
+  // Only weights can cause that (unweighted points are never redundant, duplicates aside), so
+  // unweighted inputs skip the search. The conflict cells are still intact here.
+  constexpr std::uint32_t kInteriorVertex = 0xFFFFFFFFu;
+  s.interior.clear();
+  if (weighted_)
+    for (const CellId x : s.conflict)
+      for (const PointId v : cells[x].v)
+        if (v != kInfiniteVertex && local[v] == 0) {
+          local[v] = kInteriorVertex;
+          s.interior.push_back(v);
+        }
   for (const PointId v : s.boundary_vertices) local[v] = 0;
   for (const PointId v : s.interior) local[v] = 0;
 
