@@ -405,6 +405,12 @@ PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes,
 PointId RegularTriangulation::insert(std::span<const WeightedPoint> points,
                                      std::vector<PointId>* ids) {
   const auto first = static_cast<PointId>(points_.size());
+  // Validate the whole batch first, so that a bad point leaves the triangulation unchanged.
+  for (const WeightedPoint& p : points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
+      throw std::invalid_argument("RegularTriangulation::insert: non-finite coordinate or weight");
+  if (points_.size() + points.size() > kMaxPoints)
+    throw std::length_error("RegularTriangulation: more than 2^31 points");
   reserve(points_.size() + points.size());
   std::vector<std::uint32_t> order;
   brio_order(points, order);

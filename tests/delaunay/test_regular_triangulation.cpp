@@ -269,4 +269,13 @@ TEST_CASE("copies, moves, clear, input validation") {
   CHECK_THROWS_AS(t.insert({std::numeric_limits<double>::quiet_NaN(), 0, 0, 0}), std::invalid_argument);
   CHECK_THROWS_AS(t.insert({0, std::numeric_limits<double>::infinity(), 0, 0}), std::invalid_argument);
   CHECK(t.number_of_points() == 0);
+  // A bad point in a batch leaves the triangulation untouched.
+  t.insert(test::uniform_points(rng, 50, 0, 1));
+  const auto before = test::finite_cell_quads(t);
+  auto batch = test::uniform_points(rng, 20, 0, 1);
+  batch[13].w = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(t.insert(batch), std::invalid_argument);
+  CHECK(t.number_of_points() == 50);
+  CHECK(test::finite_cell_quads(t) == before);
+  CHECK_MESSAGE(t.is_valid(&why), why);
 }
