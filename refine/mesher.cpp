@@ -231,6 +231,36 @@ void Mesher::refine_ball(BallKey key) {
   }
 }
 
+bool Mesher::refine_around(PointId p) {
+  std::uint32_t best = kNoFacet;
+  double d1 = -1;
+  BallKey big = kNoBallKey;
+  double d2 = -1;
+  auto consider_ball = [&](PointId q) {
+    if (places_[q].kind != VertexPlace::Kind::ball) return;
+    const double r = balls_->ball(places_[q].ball).radius;
+    if (r > d2) {
+      d2 = r;
+      big = places_[q].ball;
+    }
+  };
+  consider_ball(p);
+  for (const std::uint32_t slot : facets_.incident(p)) {
+    const RestrictedFacet& r = facets_[slot];
+    for (const PointId v : r.vertices) consider_ball(v);
+    if (r.discarded || r.size <= d1) continue;
+    d1 = r.size;
+    best = slot;
+  }
+  if (best != kNoFacet && d1 >= d2) {
+    ++stats_.insertions_disk;
+    return insert_surface_point(best);
+  }
+  if (big == kNoBallKey) return false;
+  refine_ball(big);
+  return true;
+}
+
 std::size_t Mesher::domain_vertex_count() const { return dt_.number_of_vertices() - frame_points_; }
 
 void Mesher::run() {
@@ -251,6 +281,7 @@ void Mesher::run() {
     const std::uint32_t top = facets_.largest();
     const double d1 = top == kNoFacet ? -1 : facets_[top].size;
     if (!failing_d12_.empty()) {
+      if (options_.local_disk_refinement && refine_around(*failing_d12_.begin())) continue;
       const BallKey big = balls_->largest();
       const double d2 = big == kNoBallKey ? -1 : balls_->ball(big).radius;
       if (top != kNoFacet && d1 >= d2) {

@@ -4,6 +4,13 @@
 //       point realising it) and d2 the largest ball radius, insert x if d1 >= d2, else RefineBall
 //       the largest ball; else if some vertex fails D3 or D4, insert the point of its offending
 //       umbrella triangle (the x of the termination proof, Theorem 3.1);
+//       With local_disk_refinement (the default), d1 and d2 are taken over p's neighbourhood:
+//       the restricted facets incident to p (all patches) and the balls among p and their
+//       vertices. The paper's global maxima make one persistent local failure (a thin wedge, a
+//       short curve) refine the whole model down to the size that failure needs; Lemma 2.2, on
+//       which the termination argument rests, only involves the sizes of triangles and balls
+//       near p, so refining there is what the argument needs. When p has no usable umbrella
+//       facet and is no ball, the global choice is used.
 //   (b) else if some size(t, σ) > λ, insert the point realising the largest;
 //   (c) repeat while something changed.
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
@@ -44,6 +51,9 @@ struct MesherOptions {
   double facet_size = 0;          ///< λ of step 2(b), absolute (> 0)
   std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
+  /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
+  /// file comment) instead of over the whole mesh; false: the paper's global choice.
+  bool local_disk_refinement = true;
   /// Called with the number of domain vertices every `progress_every` steps of the loop (for a
   /// progress line; empty: never).
   std::function<void(std::size_t vertices)> progress;
@@ -92,6 +102,7 @@ class Mesher {
   void apply(const delaunay::ChangeSet& changes);  // facets, then re-check touched vertices
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
+  bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
   void refine_ball(BallKey key);
   PointId insert_ball(BallKey key);
   void remove_point(PointId p);
