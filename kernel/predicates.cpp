@@ -8,7 +8,8 @@
 //   orient3d:  2x2 minor 4u (mag 2MyMz); times a leaf 6u (2MxMyMz); sum of three 8u (6MxMyMz):
 //              error <= 48u MxMyMz.                                      -> 49u with slack.
 //   insphere / 5-point power test: xy-minors 4u (2MxMy); 3x3 minors 8u (6MxMyMz); lift
-//              dx^2+dy^2+dz^2 (+ weight difference) 6u (ML = Mx^2+My^2+Mz^2+Mw); lift * minor
+//              dx^2+dy^2+dz^2 (+ weight difference) 6u relative to ML, the largest row value of
+//              |d_i|^2 + |w_t - w_i| (<= Mx^2+My^2+Mz^2+Mw; it bounds each lift and its error); lift * minor
 //              15u (6 MxMyMz ML); two levels of sums 17u (24 MxMyMz ML):
 //              error <= 408u MxMyMz ML.                                  -> 416u with slack.
 //   orient2d:  4u on 2MiMj: error <= 8u MiMj.                            -> 9u.

@@ -46,6 +46,13 @@ inline double max_abs4(double a, double b, double c, double d) {
 // (x, y, z, lift); lift_i = |p_i - t|^2 + (w_t - w_i) when weighted. Returns the *negated*
 // determinant's sign (CGAL's convention: +1 = conflict for positively oriented p,q,r,s), or 2
 // when the filter cannot decide.
+//
+// Written for speed on the filter path (bench_predicates, BENCHMARKS.md): the column maxima are
+// taken right after the differences, which are live then anyway (taken last, they kept all twelve
+// alive across the minors and GCC spilled them); ML is the largest lift magnitude row by row, a
+// bound at most the column-wise Mx^2+My^2+Mz^2+Mw of the derivation, so the same constant holds;
+// and the sign leaves through one branch that is almost always taken, because on general input
+// the sign itself is a coin toss no branch predictor learns.
 template <bool Weighted>
 inline int power_test_filter(const double* p, const double* q, const double* r, const double* s,
                              const double* t) {
@@ -53,19 +60,25 @@ inline int power_test_filter(const double* p, const double* q, const double* r, 
   const double dqx = q[0] - t[0], dqy = q[1] - t[1], dqz = q[2] - t[2];
   const double drx = r[0] - t[0], dry = r[1] - t[1], drz = r[2] - t[2];
   const double dsx = s[0] - t[0], dsy = s[1] - t[1], dsz = s[2] - t[2];
+  const double mx = max_abs4(dpx, dqx, drx, dsx);
+  const double my = max_abs4(dpy, dqy, dry, dsy);
+  const double mz = max_abs4(dpz, dqz, drz, dsz);
 
   double lp = dpx * dpx + dpy * dpy + dpz * dpz;
   double lq = dqx * dqx + dqy * dqy + dqz * dqz;
   double lr = drx * drx + dry * dry + drz * drz;
   double ls = dsx * dsx + dsy * dsy + dsz * dsz;
-  double mw = 0;
+  double ml;  // largest |d_i|^2 + |w_t - w_i| over the rows
   if constexpr (Weighted) {
     const double wp = t[3] - p[3], wq = t[3] - q[3], wr = t[3] - r[3], ws = t[3] - s[3];
+    ml = std::max(std::max(lp + std::fabs(wp), lq + std::fabs(wq)),
+                  std::max(lr + std::fabs(wr), ls + std::fabs(ws)));
     lp += wp;
     lq += wq;
     lr += wr;
     ls += ws;
-    mw = max_abs4(wp, wq, wr, ws);
+  } else {
+    ml = std::max(std::max(lp, lq), std::max(lr, ls));
   }
 
   // 2x2 minors of the (x, y) columns, then 3x3 minors with z, then the lift column.
@@ -81,13 +94,8 @@ inline int power_test_filter(const double* p, const double* q, const double* r, 
   const double qrs = dqz * rs - drz * qs + dsz * qr;
   const double det = (ls * pqr - lr * pqs) + (lq * prs - lp * qrs);
 
-  const double mx = max_abs4(dpx, dqx, drx, dsx);
-  const double my = max_abs4(dpy, dqy, dry, dsy);
-  const double mz = max_abs4(dpz, dqz, drz, dsz);
-  const double ml = mx * mx + my * my + mz * mz + mw;
   const double bound = kInsphereBound * (mx * my * mz) * ml;
-  if (det > bound) return -1;
-  if (det < -bound) return 1;
+  if (std::fabs(det) > bound) [[likely]] return (det < 0) - (det > 0);
   return 2;
 }
 
@@ -102,13 +110,10 @@ inline int orient3d(const double* p, const double* q, const double* r, const dou
   const double my = detail::max_abs3(ay, by, cy);
   const double mz = detail::max_abs3(az, bz, cz);
   const double bound = detail::kOrient3dBound * (mx * my * mz);
-  if (det > bound) {
+  // One almost-always-taken branch, then a branch-free sign (see power_test_filter).
+  if (std::fabs(det) > bound) [[likely]] {
     DELPSC_COUNT(Predicate::orient3d, false);
-    return 1;
-  }
-  if (det < -bound) {
-    DELPSC_COUNT(Predicate::orient3d, false);
-    return -1;
+    return (det > 0) - (det < 0);
   }
   // A whole column of zero differences: the four points share that coordinate, det is exactly 0.
   if (mx == 0 || my == 0 || mz == 0) {
@@ -123,14 +128,16 @@ inline int insphere(const double* p, const double* q, const double* r, const dou
                     const double* t) {
   const int f = detail::power_test_filter<false>(p, q, r, s, t);
   DELPSC_COUNT(Predicate::insphere, f == 2);
-  return f != 2 ? f : detail::power_test_exact(p, q, r, s, t, false);
+  if (f != 2) [[likely]] return f;
+  return detail::power_test_exact(p, q, r, s, t, false);
 }
 
 inline int power_test(const double* p, const double* q, const double* r, const double* s,
                       const double* t) {
   const int f = detail::power_test_filter<true>(p, q, r, s, t);
   DELPSC_COUNT(Predicate::power_test_3d, f == 2);
-  return f != 2 ? f : detail::power_test_exact(p, q, r, s, t, true);
+  if (f != 2) [[likely]] return f;
+  return detail::power_test_exact(p, q, r, s, t, true);
 }
 
 }  // namespace delpsc::kernel
