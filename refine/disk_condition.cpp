@@ -141,6 +141,16 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
       }
     }
   }
+  // A triangle restricted to a patch σ that does not contain p: it belongs to no umbrella checked
+  // above (those are taken over p's own patches), yet it would put p into Skl²|σ. It is the D4
+  // failure of its vertices that lie in σ, if any; reporting it at p too covers a triangle none
+  // of whose vertices lie in σ (seen on a rotated box with a fin at 4%).
+  if (late.failure == DiskFailure::none)
+    for (const std::uint32_t s : facets.incident(p)) {
+      const std::uint32_t sigma = facets[s].patch;
+      if (std::none_of(patches.begin(), patches.end(), [&](const auto& e) { return e.first == sigma; }))
+        return {DiskFailure::d4, sigma, s};
+    }
   return late;
 }
 

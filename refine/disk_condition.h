@@ -5,7 +5,9 @@
 //  (D2) p is inside that disk (cycle) iff p ∈ int σ (an unweighted point, or a ball on a curve
 //       with σ on both of its sides, like a slit), on its boundary (path) otherwise;
 //  (D3) a vertex p on a curve or corner is joined in Umb_σ(p) to no ball that is not adjacent to it;
-//  (D4) every vertex of Umb_σ(p) lies in σ.
+//  (D4) every vertex of Umb_σ(p) lies in σ; here also: no restricted triangle incident to p is
+//       restricted to a patch that does not contain p (otherwise a triangle of σ with no vertex
+//       in σ would escape every umbrella).
 // Once the restricted triangles are known the checks are combinatorial. Cost: O(k^2) for an
 // umbrella of k triangles (k is ~6-20).
 #pragma once

@@ -303,8 +303,14 @@ void Mesher::run() {
         if (failing_d34_.count(p) != 0) failing_d34_.erase(p);
         continue;
       }
-      ++stats_.insertions_d34;
-      if (insert_surface_point(v.facet)) continue;
+      // A record whose point proved off V_t (discarded) would be offered again forever: refine
+      // around p instead.
+      if (facets_[v.facet].discarded) {
+        if (refine_around(p)) continue;
+      } else {
+        ++stats_.insertions_d34;
+        if (insert_surface_point(v.facet)) continue;
+      }
       stats_.stuck = true;
       stats_.message = "D3/D4 fails at a point that cannot be inserted";
       return;

@@ -7,10 +7,12 @@
 //       With local_disk_refinement (the default), d1 and d2 are taken over p's neighbourhood:
 //       the restricted facets incident to p (all patches) and the balls among p and their
 //       vertices. The paper's global maxima make one persistent local failure (a thin wedge, a
-//       short curve) refine the whole model down to the size that failure needs; Lemma 2.2, on
-//       which the termination argument rests, only involves the sizes of triangles and balls
-//       near p, so refining there is what the argument needs. When p has no usable umbrella
-//       facet and is no ball, the global choice is used.
+//       short curve) refine the whole model down to the size that failure needs. Lemma 2.2
+//       (D1, D2 hold at p once the triangles and balls near p are small enough) suggests the
+//       local choice also terminates, but the packing argument of §3 is written for the global
+//       one and is not redone here: max_vertices is the guard. When p has no usable umbrella
+//       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
+//       already proved off V_t (discarded) is handled by the same local step.
 //   (b) else if some size(t, σ) > λ, insert the point realising the largest;
 //   (c) repeat while something changed.
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted

@@ -94,6 +94,23 @@ TEST_CASE("local step 2(a) refines balls where they are too large") {
 
 TEST_CASE("book of three sheets (non-manifold spine)") { mesh_model(io::make_book(3, 4), 0.04); }
 TEST_CASE("box with a fin (slit)") { mesh_model(io::make_box_with_fin(4), 0.04); }
+// Planar patches that are not axis-aligned: rounded coordinates make nearly flat cells and points
+// rejected off their dual edge; the rotated book at 2% looped forever re-offering a discarded
+// D3/D4 record.
+io::TriangleSoup rotated(io::TriangleSoup soup) {
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(1.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.7, Vec3::UnitY()) *
+                             Eigen::AngleAxisd(0.3, Vec3::UnitX()))
+                                .toRotationMatrix();
+  for (Vec3& v : soup.vertices) v = r * v;
+  return soup;
+}
+
+TEST_CASE("rotated models") {
+  mesh_model(rotated(io::make_box_with_fin(4)), 0.04);
+  mesh_model(rotated(io::make_book(3, 4)), 0.02);
+  mesh_model(rotated(io::make_cube(4)), 0.02);
+}
+
 // With the paper's global step 2(a) this hit 30,000 vertices: a D1/D2 failure near the 10° edge
 // refined every ball and then the whole surface down to the largest remaining ball (issue 6).
 TEST_CASE("wedge with a 10 degree edge") {
