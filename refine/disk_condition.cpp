@@ -79,6 +79,7 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   std::vector<std::uint32_t> link_facet;
   std::vector<PointId> verts;
   std::vector<int> degree;
+  std::vector<std::size_t> parent;
   for (const auto& [sigma, interior] : patches) {
     link.clear();
     link_facet.clear();
@@ -93,36 +94,37 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
       link_facet.push_back(s);
     }
     if (link.empty()) return {DiskFailure::d1, sigma, kNoFacet};
-    // The link graph: vertices with their degrees.
+    // The link graph: its vertices sorted, degrees, and connectivity by union-find, so that a
+    // vertex with a large umbrella (a big ball next to many small ones) costs O(k log k), not
+    // O(k^2): it is re-checked after every insertion nearby.
     verts.clear();
-    degree.clear();
+    for (const auto& e : link) verts.insert(verts.end(), e.begin(), e.end());
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     auto index = [&](PointId v) {
-      const auto it = std::find(verts.begin(), verts.end(), v);
-      if (it != verts.end()) return static_cast<std::size_t>(it - verts.begin());
-      verts.push_back(v);
-      degree.push_back(0);
-      return verts.size() - 1;
+      return static_cast<std::size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
     };
+    degree.assign(verts.size(), 0);
+    parent.resize(verts.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto root = [&](std::size_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    std::size_t components = verts.size();
     for (const auto& e : link) {
-      ++degree[index(e[0])];
-      ++degree[index(e[1])];
+      const std::size_t a = index(e[0]), b = index(e[1]);
+      ++degree[a];
+      ++degree[b];
+      const std::size_t ra = root(a), rb = root(b);
+      if (ra != rb) {
+        parent[ra] = rb;
+        --components;
+      }
     }
     if (std::any_of(degree.begin(), degree.end(), [](int d) { return d > 2; }))
       return {DiskFailure::d1, sigma, kNoFacet};
-    // Connected? Grow from the first edge's vertex over the edges (small: quadratic is fine).
-    std::vector<char> reached(verts.size(), 0);
-    reached[0] = 1;
-    for (bool grew = true; grew;) {
-      grew = false;
-      for (const auto& e : link) {
-        const std::size_t a = index(e[0]), b = index(e[1]);
-        if (reached[a] != reached[b]) {
-          reached[a] = reached[b] = 1;
-          grew = true;
-        }
-      }
-    }
-    if (std::find(reached.begin(), reached.end(), 0) != reached.end()) return {DiskFailure::d1, sigma, kNoFacet};
+    if (components != 1) return {DiskFailure::d1, sigma, kNoFacet};
     // Connected with degrees <= 2: a cycle when E == V, a path when E == V - 1.
     const bool cycle = link.size() == verts.size();
     if (cycle != interior) return {DiskFailure::d2, sigma, kNoFacet};
