@@ -28,15 +28,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, "--preview " + o.preview + ": the preview is an SVG picture (name it *.svg)"};
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
-  protect::ComplexOptions options;
-  options.feature_angle_degrees = o.angle;
-  options.corner_angle_degrees = o.corner_angle;
-  protect::Complex complex;
-  try {
-    complex = protect::build_complex(model.soup, options);
-  } catch (const std::invalid_argument& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
-  }
+  const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};

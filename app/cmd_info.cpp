@@ -23,14 +23,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
-  protect::ComplexOptions options;
-  options.feature_angle_degrees = o.angle;
-  protect::Complex complex;
-  try {
-    complex = protect::build_complex(soup, options);
-  } catch (const std::invalid_argument& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
-  }
+  const protect::Complex complex = load_complex(model, o.input, o.angle, protect::ComplexOptions{}.corner_angle_degrees);
   std::size_t boundary = 0, non_manifold = 0;
   for (std::size_t e = 0; e < complex.edges.size(); ++e) {
     boundary += (complex.edge_feature[e] & protect::kBoundaryEdge) != 0;

@@ -61,15 +61,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .mesh, .vtu, .off, .obj, .ply or .stl)"};
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = Clock::now();
-  protect::ComplexOptions complex_options;
-  complex_options.feature_angle_degrees = o.angle;
-  complex_options.corner_angle_degrees = o.corner_angle;
-  protect::Complex complex;
-  try {
-    complex = protect::build_complex(model.soup, complex_options);
-  } catch (const std::invalid_argument& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
-  }
+  protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
   const refine::PolygonDomain domain(std::move(complex));

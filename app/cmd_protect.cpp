@@ -102,15 +102,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   if (!o.vtu_path.empty() && !ends_with_vtu(o.vtu_path))
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
   const io::ReadResult model = load_model(o.input, g);
-  protect::ComplexOptions complex_options;
-  complex_options.feature_angle_degrees = o.angle;
-  complex_options.corner_angle_degrees = o.corner_angle;
-  protect::Complex complex;
-  try {
-    complex = protect::build_complex(model.soup, complex_options);
-  } catch (const std::invalid_argument& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
-  }
+  protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to protect"};
 

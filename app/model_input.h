@@ -4,6 +4,8 @@
 
 #include <delpsc/io/error.h>
 #include <delpsc/io/read_model.h>
+#include <delpsc/protect/complex.h>
+#include <stdexcept>
 
 #include "command.h"
 
@@ -24,6 +26,21 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
                    path.c_str(), result.report.degenerate_triangles.size());
   }
   return result;
+}
+
+/// The piecewise smooth complex of a model read by load_model, with the feature and corner
+/// angles of the command line; a bad user polyline or similar becomes a bad-input exit naming
+/// the file.
+inline protect::Complex load_complex(const io::ReadResult& model, const std::string& path,
+                                     double feature_angle, double corner_angle) {
+  protect::ComplexOptions options;
+  options.feature_angle_degrees = feature_angle;
+  options.corner_angle_degrees = corner_angle;
+  try {
+    return protect::build_complex(model.soup, options);
+  } catch (const std::invalid_argument& e) {
+    throw Failure{kBadInput, path + ": " + e.what()};
+  }
 }
 
 }  // namespace delpsc::app

@@ -27,6 +27,34 @@ expect() {
 # value KEY: the value of KEY= in the last command's stdout.
 value() { sed -n "s/^$1=//p" "$TMP/out" | head -n 1; }
 
+# write_cube FILE: the unit cube [0,1]^3 as an OFF file, 12 outward-oriented triangles.
+write_cube() {
+  cat >"$1" <<'MODEL'
+OFF
+8 12 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+3 0 2 1
+3 0 3 2
+3 4 5 6
+3 4 6 7
+3 0 1 5
+3 0 5 4
+3 1 2 6
+3 1 6 5
+3 2 3 7
+3 2 7 6
+3 3 0 4
+3 3 4 7
+MODEL
+}
+
 finish() {
   echo "$passes passed, $failures failed"
   [[ $failures -eq 0 ]]

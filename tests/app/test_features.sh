@@ -2,30 +2,7 @@
 # delpsc features: counts on a cube written by hand, outputs, and bad input.
 source "$(dirname "$0")/lib.sh"
 
-cat >"$TMP/cube.off" <<'MODEL'
-OFF
-8 12 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-3 0 2 1
-3 0 3 2
-3 4 5 6
-3 4 6 7
-3 0 1 5
-3 0 5 4
-3 1 2 6
-3 1 6 5
-3 2 3 7
-3 2 7 6
-3 3 0 4
-3 3 4 7
-MODEL
+write_cube "$TMP/cube.off"
 expect 0 "" -- features "$TMP/cube.off" -o "$TMP/cube.vtu"
 [[ "$(value corners)" == "8" ]] || fail "cube corners: $(value corners)"
 [[ "$(value curves)" == "12" ]] || fail "cube curves: $(value curves)"

@@ -4,30 +4,7 @@
 # --max-vertices (exit 1, mesh still written, failing vertices listed), and bad input (exit 2).
 source "$(dirname "$0")/lib.sh"
 
-cat >"$TMP/cube.off" <<'MODEL'
-OFF
-8 12 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-3 0 2 1
-3 0 3 2
-3 4 5 6
-3 4 6 7
-3 0 1 5
-3 0 5 4
-3 1 2 6
-3 1 6 5
-3 2 3 7
-3 2 7 6
-3 3 0 4
-3 3 4 7
-MODEL
+write_cube "$TMP/cube.off"
 
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/cube.off.out.off" --balls "$TMP/balls.txt" --check
 [[ "$(value g1)" == "true" ]] || fail "g1=$(value g1)"

@@ -3,30 +3,7 @@
 # read back, the VTU, --check, sizes as lengths and percentages, and bad input.
 source "$(dirname "$0")/lib.sh"
 
-cat >"$TMP/cube.off" <<'MODEL'
-OFF
-8 12 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-3 0 2 1
-3 0 3 2
-3 4 5 6
-3 4 6 7
-3 0 1 5
-3 0 5 4
-3 1 2 6
-3 1 6 5
-3 2 3 7
-3 2 7 6
-3 3 0 4
-3 3 4 7
-MODEL
+write_cube "$TMP/cube.off"
 
 # A prism over a triangle with a 10-degree apex (legs of length 1), height 1/2.
 cat >"$TMP/wedge.off" <<'MODEL'
