@@ -33,6 +33,8 @@ struct MeshCommandOptions {
   double angle = 60;
   double corner_angle = 60;
   std::size_t max_vertices = 0;
+  std::string facet_distance;  // empty: off
+  double facet_angle = 0;
   std::string balls_path;
   bool check = false;
 };
@@ -81,6 +83,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   refine::ProtectedBalls balls(*ball_set);
   refine::MesherOptions options;
   options.facet_size = lambda;
+  if (!o.facet_distance.empty())
+    options.facet_distance = parse_size(o.facet_distance, (box.hi - box.lo).norm(), "--facet-distance");
+  options.facet_angle = o.facet_angle;
   options.max_vertices = o.max_vertices;
   if (!g.quiet && isatty(STDERR_FILENO))
     options.progress = [](std::size_t vertices) { std::fprintf(stderr, "\rdelpsc: refining, %zu vertices", vertices); };
@@ -119,9 +124,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (g.verbosity > 0) {
     const refine::MesherStats& s = mesher.stats();
     std::fprintf(stderr,
-                 "delpsc: insertions disk=%zu d34=%zu size=%zu, refused_inside_ball=%zu swallowed=%zu "
-                 "rejected_inaccurate=%zu seeds=%zu\n",
-                 s.insertions_disk, s.insertions_d34, s.insertions_size, s.refused_inside_ball, s.swallowed,
+                 "delpsc: insertions disk=%zu d34=%zu size=%zu distance=%zu angle=%zu, refused_inside_ball=%zu "
+                 "swallowed=%zu rejected_inaccurate=%zu seeds=%zu\n",
+                 s.insertions_disk, s.insertions_d34, s.insertions_size, s.insertions_distance, s.insertions_angle,
+                 s.refused_inside_ball, s.swallowed,
                  s.rejected_inaccurate, s.seeds);
   }
 
@@ -165,6 +171,13 @@ Runner register_mesh(CLI::App& app) {
   app.add_option("--corner-angle", o->corner_angle,
                  "A curve turning by more than this many degrees at a vertex gets a corner there")
       ->check(CLI::Range(0.0, 180.0));
+  app.add_option("--facet-distance", o->facet_distance,
+                 "Largest distance between a triangle's circumcentre and the surface point it stands for (CGAL's "
+                 "facet_distance), a length or a percentage of the diagonal (default: off)");
+  app.add_option("--facet-angle", o->facet_angle,
+                 "Smallest angle, in degrees, of triangles away from the features (vertices all off the protecting "
+                 "balls); at most 30, the largest bound for which refinement is known to end (default: off)")
+      ->check(CLI::Range(0.0, refine::kMaxFacetAngleDegrees));
   app.add_option("--max-vertices", o->max_vertices,
                  "Stop refining at this many vertices; the mesh reached is still written, exit code 1");
   app.add_flag("--check", o->check,
@@ -177,7 +190,8 @@ Runner register_mesh(CLI::App& app) {
       "disk_condition (ok, or the number of vertices where it fails), min_angle (degrees), g1 (--check).\n"
       "Exit code 1 when refinement stopped early (--max-vertices), the disk condition fails "
       "somewhere or G1 fails (--check): the mesh reached is written anyway and the failing vertices are listed on stderr.\n\n"
-      "Example:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh");
+      "Examples:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh\n"
+      "  delpsc mesh part.stl --size 2% --facet-distance 0.1% --facet-angle 25 -o part.vtu");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

@@ -15,10 +15,10 @@ Mesher::Mesher(const Domain& domain, BallSource& balls, const MesherOptions& opt
     : domain_(&domain),
       balls_(&balls),
       options_(options),
+      criteria_(FacetCriteriaOptions{options.facet_size, options.sizing, options.facet_distance, options.facet_angle}),
       facets_(dt_, domain),
       disk_(domain, balls, places_) {
-  if (!(options.facet_size > 0) || !std::isfinite(options.facet_size))
-    throw std::invalid_argument("Mesher: facet_size must be positive and finite");
+  facets_.set_badness([this](const RestrictedFacet& r) { return criteria_.badness(r, dt_); });
 }
 
 void Mesher::seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const {
@@ -315,11 +315,15 @@ void Mesher::run() {
       stats_.message = "D3/D4 fails at a point that cannot be inserted";
       return;
     }
-    if (top != kNoFacet && d1 > options_.facet_size) {
-      ++stats_.insertions_size;
-      if (insert_surface_point(top)) continue;
+    if (const std::uint32_t bad = facets_.worst(); bad != kNoFacet) {  // step 2(b)
+      FacetCriterion which = FacetCriterion::none;
+      criteria_.badness(facets_[bad], dt_, &which);
+      ++(which == FacetCriterion::distance ? stats_.insertions_distance
+         : which == FacetCriterion::angle  ? stats_.insertions_angle
+                                           : stats_.insertions_size);
+      if (insert_surface_point(bad)) continue;
       stats_.stuck = true;
-      stats_.message = "size criterion: point cannot be inserted";
+      stats_.message = std::string(to_string(which)) + " criterion: point cannot be inserted";
       return;
     }
     return;

@@ -13,7 +13,8 @@
 //       one and is not redone here: max_vertices is the guard. When p has no usable umbrella
 //       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
 //       already proved off V_t (discarded) is handled by the same local step.
-//   (b) else if some size(t, σ) > λ, insert the point realising the largest;
+//   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
+//       > sizing(x) -, facet_distance, facet_angle), insert the point x of the worst one;
 //   (c) repeat while something changed.
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
 // facets follow (restricted_facets.h), and only the vertices of changed facets are re-checked.
@@ -45,12 +46,19 @@
 #include "ball_source.h"
 #include "disk_condition.h"
 #include "domain.h"
+#include "facet_criteria.h"
 #include "restricted_facets.h"
 
 namespace delpsc::refine {
 
 struct MesherOptions {
-  double facet_size = 0;          ///< λ of step 2(b), absolute (> 0)
+  double facet_size = 0;          ///< λ of step 2(b), absolute (> 0 unless `sizing` is given)
+  /// λ as a function of position, absolute, positive and finite on the domain (the smaller of it
+  /// and facet_size applies). Empty: the constant facet_size.
+  std::function<double(const Vec3&)> sizing;
+  double facet_distance = 0;      ///< CGAL's facet_distance, absolute; 0: off (facet_criteria.h)
+  double facet_angle = 0;         ///< lower bound on angles of all-unweighted triangles, degrees,
+                                  ///< at most kMaxFacetAngleDegrees (30); 0: off
   std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
@@ -65,7 +73,9 @@ struct MesherOptions {
 struct MesherStats {
   std::size_t insertions_disk = 0;      ///< step 2(a), D1/D2 failure, d1 >= d2
   std::size_t insertions_d34 = 0;       ///< step 2(a), D3/D4 failure
-  std::size_t insertions_size = 0;      ///< step 2(b)
+  std::size_t insertions_size = 0;      ///< step 2(b), facet_size (or sizing) failed worst
+  std::size_t insertions_distance = 0;  ///< step 2(b), facet_distance failed worst
+  std::size_t insertions_angle = 0;     ///< step 2(b), facet_angle failed worst
   std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
   std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
   std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
@@ -79,6 +89,7 @@ struct MesherStats {
 class Mesher {
  public:
   /// `domain` and `balls` must outlive the mesher; balls are refined through `balls`.
+  /// Throws std::invalid_argument for impossible options (facet_criteria.h).
   Mesher(const Domain& domain, BallSource& balls, const MesherOptions& options);
 
   /// Runs step 2 until nothing changes (or the vertex cap). Call once.
@@ -112,6 +123,7 @@ class Mesher {
   const Domain* domain_;
   BallSource* balls_;
   MesherOptions options_;
+  FacetCriteria criteria_;
   delaunay::RegularTriangulation dt_;
   std::vector<VertexPlace> places_;  // by PointId
   RestrictedFacets facets_;

@@ -129,6 +129,10 @@ void RestrictedFacets::examine(Facet f, const Key& k, std::vector<PointId>& touc
       touched.push_back(u);
     }
     heap_.emplace(r.power, s, r.stamp);
+    if (badness_) {
+      const double b = badness_(r);
+      if (b > 1) bad_heap_.emplace(b, s, r.stamp);
+    }
   }
   if (first != kNoFacet) head_[k] = first;
 }
@@ -193,13 +197,22 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
   }
 }
 
-std::uint32_t RestrictedFacets::largest() {
-  while (!heap_.empty()) {
-    const auto [power, s, stamp] = heap_.top();
-    if (records_[s].alive && records_[s].stamp == stamp && !records_[s].discarded) return s;
-    heap_.pop();
+namespace {
+
+// Lazy deletion: pops entries whose record died, was reused (stamp) or was discarded.
+template <class Heap>
+std::uint32_t top_live(Heap& heap, const std::vector<RestrictedFacet>& records) {
+  while (!heap.empty()) {
+    const auto [key, s, stamp] = heap.top();
+    if (records[s].alive && records[s].stamp == stamp && !records[s].discarded) return s;
+    heap.pop();
   }
   return kNoFacet;
 }
+
+}  // namespace
+
+std::uint32_t RestrictedFacets::largest() { return top_live(heap_, records_); }
+std::uint32_t RestrictedFacets::worst() { return top_live(bad_heap_, records_); }
 
 }  // namespace delpsc::refine

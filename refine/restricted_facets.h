@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <queue>
 #include <span>
 #include <tuple>
@@ -74,7 +75,14 @@ class RestrictedFacets {
   }
   /// The live record of largest size, kNoFacet when there is none. Amortised O(log n).
   std::uint32_t largest();
-  /// Takes a record out of the largest() order (its point proved unusable) until it is recomputed.
+  /// How badly a record fails the refinement criteria (> 1: it must be refined; facet_criteria.h),
+  /// evaluated once when the record is made. Set before rebuild(); empty: no record is bad.
+  using Badness = std::function<double(const RestrictedFacet&)>;
+  void set_badness(Badness badness) { badness_ = std::move(badness); }
+  /// The live record of largest badness above 1, kNoFacet when there is none (step 2(b)).
+  /// Amortised O(log n).
+  std::uint32_t worst();
+  /// Takes a record out of the largest() and worst() orders (its point proved unusable) until it is recomputed.
   void discard(std::uint32_t slot) { records_[slot].discarded = true; }
   /// Calls f(slot, record) for every live record.
   template <class F>
@@ -116,6 +124,8 @@ class RestrictedFacets {
   std::vector<SurfaceHit> hits_;               // scratch
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;
+  Badness badness_;
+  std::priority_queue<HeapEntry> bad_heap_;  // badness, slot, stamp
 };
 
 }  // namespace delpsc::refine

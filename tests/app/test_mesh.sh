@@ -45,6 +45,13 @@ expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 40 -o "
 grep -q "disk condition D[1-4] fails at vertex" "$TMP/err" || fail "--max-vertices: failing vertices not listed"
 [[ "$(value disk_condition)" =~ ^[0-9]+$ ]] || fail "--max-vertices: disk_condition=$(value disk_condition)"
 
+# CGAL-style criteria: facet_distance and facet_angle refine further than the size alone.
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% --facet-distance 0.1% --facet-angle 30 -o "$TMP/criteria.off" -v
+[[ "$(value vertices)" -ge "$v" ]] || fail "criteria gave $(value vertices) vertices, size alone $v"
+[[ "$(value disk_condition)" == "ok" ]] || fail "criteria: disk_condition=$(value disk_condition)"
+expect 2 "facet-angle" -- mesh "$TMP/cube.off" --facet-angle 31 -o "$TMP/x.off"
+expect 2 "--facet-distance" -- mesh "$TMP/cube.off" --facet-distance -1 -o "$TMP/x.off"
+
 # Bad input.
 expect 2 "cannot open" -- mesh "$TMP/none.off" -o "$TMP/x.off"
 printf 'OFF\n3 1 0\n0 0 zero\n' >"$TMP/garbage.off"

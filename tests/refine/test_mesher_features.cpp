@@ -15,6 +15,8 @@
 #include <delpsc/refine/protected_balls.h>
 #include <delpsc/refine/skeleton_check.h>
 
+#include "support/mesher_checks.h"
+
 using namespace delpsc;
 
 namespace {
@@ -38,16 +40,10 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, bool loca
   options.max_vertices = 30000;
   options.local_disk_refinement = local_disk_refinement;
   refine::Mesher mesher(domain, balls, options);
-  mesher.run();
-  INFO("message: " << mesher.stats().message);
-  CHECK_FALSE(mesher.stats().stuck);
-  CHECK_FALSE(mesher.stats().stopped_at_max_vertices);
-  CHECK(mesher.failing_vertices().empty());
+  test::run_mesher_and_check(mesher);
   Outcome out;
   const io::SurfaceMesh mesh = mesher.output();
-  out.report = refine::check_skeleton(mesh, domain, 1e-9 * diag);
-  for (const auto& p : out.report.problems) INFO(p);
-  CHECK(out.report.ok());
+  out.report = test::check_g1(mesh, domain);
   // G2 per patch at this size: the input patch's topology. Skipped for a patch on both sides of
   // a curve (a slit): the complex counts its cut surface, Skl² is not cut along the slit.
   for (const auto& p : out.report.patches) {

@@ -8,6 +8,8 @@
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/skeleton_check.h>
 
+#include "support/mesher_checks.h"
+
 using namespace delpsc;
 
 namespace {
@@ -25,16 +27,10 @@ void check_smooth(const io::TriangleSoup& soup, double size_fraction, int expect
   options.facet_size = size_fraction * diagonal(domain);
   options.max_vertices = 20000;
   refine::Mesher mesher(domain, balls, options);
-  mesher.run();
-  INFO("message: " << mesher.stats().message);
-  CHECK_FALSE(mesher.stats().stuck);
-  CHECK_FALSE(mesher.stats().stopped_at_max_vertices);
-  CHECK(mesher.failing_vertices().empty());
+  test::run_mesher_and_check(mesher);
   CHECK(mesher.triangulation().is_valid());
   const io::SurfaceMesh mesh = mesher.output();
-  const refine::SkeletonReport report = refine::check_skeleton(mesh, domain, 1e-9 * diagonal(domain));
-  for (const auto& p : report.problems) INFO(p);
-  CHECK(report.ok());
+  const refine::SkeletonReport report = test::check_g1(mesh, domain);
   REQUIRE(report.patches.size() == 1);
   CHECK(report.patches[0].euler == expected_euler);
   CHECK(report.patches[0].boundary_loops == 0);

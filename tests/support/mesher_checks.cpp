@@ -1,0 +1,23 @@
+#include "mesher_checks.h"
+
+#include <doctest/doctest.h>
+
+namespace delpsc::test {
+
+void run_mesher_and_check(refine::Mesher& mesher) {
+  mesher.run();
+  INFO("message: " << mesher.stats().message);
+  CHECK_FALSE(mesher.stats().stuck);
+  CHECK_FALSE(mesher.stats().stopped_at_max_vertices);
+  CHECK(mesher.failing_vertices().empty());
+}
+
+refine::SkeletonReport check_g1(const io::SurfaceMesh& mesh, const refine::Domain& domain) {
+  const kernel::Box3 box = domain.bounding_box();
+  const refine::SkeletonReport report = refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm());
+  for (const auto& p : report.problems) INFO(p);
+  CHECK(report.ok());
+  return report;
+}
+
+}  // namespace delpsc::test

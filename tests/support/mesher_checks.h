@@ -1,0 +1,20 @@
+// What every mesher test asserts after Mesh2Complex (Dey & Levine 2009, §3): the loop ended by
+// itself (not stuck, not at the vertex cap) with the disk condition holding at every vertex, and
+// the output satisfies G1 (refine/skeleton_check.h). doctest CHECKs, so a failure names the test.
+#pragma once
+
+#include <delpsc/io/surface_mesh.h>
+#include <delpsc/refine/domain.h>
+#include <delpsc/refine/mesher.h>
+#include <delpsc/refine/skeleton_check.h>
+
+namespace delpsc::test {
+
+/// Runs `mesher` and checks that it terminated normally with the disk condition everywhere.
+void run_mesher_and_check(refine::Mesher& mesher);
+
+/// G1 of `mesh` against `domain`, vertices accepted within 1e-9 of the diagonal of the domain;
+/// CHECKs it and returns the report (per-patch topology for G2 checks).
+refine::SkeletonReport check_g1(const io::SurfaceMesh& mesh, const refine::Domain& domain);
+
+}  // namespace delpsc::test
