@@ -165,6 +165,7 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     return true;
   }
   apply(changes_);
+  recheck(id);  // the facets' update names only vertices whose umbrellas changed
   return true;
 }
 
@@ -184,6 +185,7 @@ PointId Mesher::insert_ball(BallKey key) {
   for (const PointId h : changes_.hidden)
     if (places_[h].kind == VertexPlace::Kind::surface) swallowed.push_back(h);
   apply(changes_);
+  recheck(id);  // the facets' update names only vertices whose umbrellas changed
   for (const PointId h : swallowed) remove_point(h);
   return id;
 }

@@ -14,11 +14,6 @@ using delaunay::kInfiniteVertex;
 RestrictedFacets::RestrictedFacets(const delaunay::RegularTriangulation& dt, const Domain& domain)
     : dt_(&dt), domain_(&domain) {}
 
-RestrictedFacets::Key RestrictedFacets::key_of(std::array<PointId, 3> v) {
-  std::sort(v.begin(), v.end());
-  return {v[0], v[1], v[2]};
-}
-
 std::uint32_t RestrictedFacets::new_record() {
   std::uint32_t s;
   if (!free_.empty()) {
@@ -36,22 +31,22 @@ std::uint32_t RestrictedFacets::new_record() {
   return s;
 }
 
-void RestrictedFacets::mirror(CellId c) {
-  if (cells_.size() < dt_->cell_capacity()) cells_.resize(dt_->cell_capacity());
-  cells_[c] = {dt_->vertex(c, 0), dt_->vertex(c, 1), dt_->vertex(c, 2), dt_->vertex(c, 3)};
+void RestrictedFacets::forget(FacetRef& ref) {
+  const std::uint32_t first = ref.slot;
+  const bool live = first != kNoFacet && records_[first].alive && records_[first].stamp == ref.stamp;
+  ref = {};
+  if (live) forget_chain(first);
 }
 
-void RestrictedFacets::forget(const Key& k, std::vector<PointId>& touched) {
-  const auto it = head_.find(k);
-  if (it == head_.end()) return;
-  for (std::uint32_t s = it->second; s != kNoFacet;) {
+void RestrictedFacets::forget_chain(std::uint32_t first) {
+  for (std::uint32_t s = first; s != kNoFacet;) {
     RestrictedFacet& r = records_[s];
+    gone_.push_back({r.vertices[0], r.vertices[1], r.vertices[2], r.patch});
     for (const PointId v : r.vertices) {
       auto& list = by_vertex_[v];
       const auto pos = std::find(list.begin(), list.end(), s);
       *pos = list.back();
       list.pop_back();
-      touched.push_back(v);
     }
     r.alive = false;
     ++r.stamp;  // invalidates heap entries
@@ -59,7 +54,6 @@ void RestrictedFacets::forget(const Key& k, std::vector<PointId>& touched) {
     --live_;
     s = r.next;
   }
-  head_.erase(it);
 }
 
 // V_t lies on the line of points power-equidistant from t's three vertices: through t's own
@@ -67,8 +61,8 @@ void RestrictedFacets::forget(const Key& k, std::vector<PointId>& touched) {
 // planar patches whose coordinates are rounded) has an orthocentre that double arithmetic puts
 // visibly off that line; projecting the ends back onto the line (computed from t alone, well
 // conditioned) keeps every hit power-equidistant from t's vertices, as size(t, σ) assumes.
-void RestrictedFacets::project_on_facet_line(const Key& k, delaunay::VoronoiEdge& e) const {
-  const WeightedPoint &a = dt_->point(k.a), &b = dt_->point(k.b), &c = dt_->point(k.c);
+void RestrictedFacets::project_on_facet_line(const std::array<PointId, 3>& t, delaunay::VoronoiEdge& e) const {
+  const WeightedPoint &a = dt_->point(t[0]), &b = dt_->point(t[1]), &c = dt_->point(t[2]);
   const auto centre = kernel::orthocentre(a, b, c);
   if (!centre) return;
   const Vec3 o = centre->point();
@@ -81,16 +75,19 @@ void RestrictedFacets::project_on_facet_line(const Key& k, delaunay::VoronoiEdge
     e.target = o + (e.target - o).dot(n) * n;
 }
 
-void RestrictedFacets::examine(Facet f, const Key& k, std::vector<PointId>& touched) {
+void RestrictedFacets::examine(Facet f) {
+  // Vertices in increasing order: the orthocentre (and so the projection) and the record do not
+  // depend on which cell the facet is seen from.
+  std::array<PointId, 3> v = dt_->facet_vertices(f);
+  std::sort(v.begin(), v.end());
   delaunay::VoronoiEdge e = dt_->dual(f);
-  project_on_facet_line(k, e);
+  project_on_facet_line(v, e);
   if (e.is_ray)
     domain_->intersect_ray(e.source, e.direction, hits_);
   else
     domain_->intersect_segment(e.source, e.target, hits_);
   if (hits_.empty()) return;
-  const std::array<PointId, 3> v{k.a, k.b, k.c};
-  std::array<WeightedPoint, 3> p{dt_->point(k.a), dt_->point(k.b), dt_->point(k.c)};
+  std::array<WeightedPoint, 3> p{dt_->point(v[0]), dt_->point(v[1]), dt_->point(v[2])};
   // Hits come sorted by t then patch; group them per patch (few hits: quadratic is fine).
   std::uint32_t first = kNoFacet, last = kNoFacet;
   for (std::size_t i = 0; i < hits_.size(); ++i) {
@@ -126,75 +123,83 @@ void RestrictedFacets::examine(Facet f, const Key& k, std::vector<PointId>& touc
     for (const PointId u : v) {
       if (by_vertex_.size() <= u) by_vertex_.resize(std::max<std::size_t>(u + 1, 2 * by_vertex_.size()));
       by_vertex_[u].push_back(s);
-      touched.push_back(u);
     }
+    made_.push_back({v[0], v[1], v[2], patch});
     heap_.emplace(r.power, s, r.stamp);
     if (badness_) {
       const double b = badness_(r);
       if (b > 1) bad_heap_.emplace(b, s, r.stamp);
     }
   }
-  if (first != kNoFacet) head_[k] = first;
+  if (first == kNoFacet) return;
+  const FacetRef r{first, records_[first].stamp};
+  ref(f.cell, f.index) = r;
+  const Facet m = dt_->mirror_facet(f);
+  ref(m.cell, m.index) = r;
+}
+
+void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
+  // The disk condition at v reads only the (triangle, patch) pairs incident to v: a facet
+  // re-examined with the same outcome (the common case on the cavity's boundary) changes nothing.
+  std::sort(gone_.begin(), gone_.end());
+  std::sort(made_.begin(), made_.end());
+  std::size_t i = 0, j = 0;
+  auto touch = [&](const std::array<std::uint32_t, 4>& t) { touched.insert(touched.end(), t.begin(), t.begin() + 3); };
+  while (i < gone_.size() || j < made_.size()) {
+    if (j == made_.size() || (i < gone_.size() && gone_[i] < made_[j]))
+      touch(gone_[i++]);
+    else if (i == gone_.size() || made_[j] < gone_[i])
+      touch(made_[j++]);
+    else
+      ++i, ++j;
+  }
+  gone_.clear();
+  made_.clear();
 }
 
 void RestrictedFacets::rebuild(std::vector<PointId>& touched) {
-  std::vector<Key> keys;
-  for (const auto& entry : head_) keys.push_back(entry.first);
-  for (const Key& k : keys) forget(k, touched);
-  cells_.assign(dt_->cell_capacity(), {});
+  for (FacetRef& r : facet_refs_) forget(r);
+  facet_refs_.assign(4 * dt_->cell_capacity(), {});
   for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
-    if (!dt_->is_cell_alive(c)) continue;
-    mirror(c);
     // Each finite facet once: from its finite cell of smaller id (a hull facet from its only
     // finite cell); facets through the infinite vertex have no dual edge.
-    if (dt_->is_infinite(c)) continue;
+    if (!dt_->is_cell_alive(c) || dt_->is_infinite(c)) continue;
     for (int i = 0; i < 4; ++i) {
-      const Facet f{c, i};
       const CellId other = dt_->neighbour(c, i);
       if (!dt_->is_infinite(other) && other < c) continue;
-      examine(f, key_of(dt_->facet_vertices(f)), touched);
+      examine(Facet{c, i});
     }
   }
+  touch_changed(touched);
 }
 
 void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched) {
-  // Destroyed first: their slots may have been recycled by created cells.
-  for (const CellId c : changes.destroyed) {
-    if (c >= cells_.size()) continue;
-    const auto& v = cells_[c];
-    for (int i = 0; i < 4; ++i) {
-      std::array<PointId, 3> t{};
-      int n = 0;
-      bool infinite = false;
-      for (int j = 0; j < 4; ++j) {
-        if (j == i) continue;
-        infinite |= v[j] == kInfiniteVertex;
-        t[n++] = v[j];
-      }
-      if (!infinite) forget(key_of(t), touched);
-    }
-  }
-  std::vector<std::pair<Key, Facet>> todo;
+  if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
+  if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
+  // Destroyed first: their slots may have been recycled by created cells, and still hold the old
+  // references.
+  for (const CellId c : changes.destroyed)
+    for (int i = 0; i < 4; ++i) forget(ref(c, i));
+  ++update_epoch_;
+  for (const CellId c : changes.created)
+    if (dt_->is_cell_alive(c)) created_mark_[c] = update_epoch_;
   for (const CellId c : changes.created) {
-    mirror(c);
+    if (!dt_->is_cell_alive(c)) continue;
     const int inf = dt_->infinite_index(c);
     for (int i = 0; i < 4; ++i) {
-      const PointId v = dt_->vertex(c, i);
-      if (v != kInfiniteVertex) touched.push_back(v);
-      if (inf >= 0 && inf != i) continue;
-      Facet f{c, i};
-      if (inf == i) f = dt_->mirror_facet(f);  // examine the hull facet from its finite cell
-      todo.emplace_back(key_of(dt_->facet_vertices(f)), f);
+      if (inf >= 0 && inf != i) continue;  // a facet through the infinite vertex: no dual edge
+      // Each facet once: a facet between two created cells from the one of smaller id.
+      const CellId n = dt_->neighbour(c, i);
+      if (created_mark_[n] == update_epoch_ && n < c) continue;
+      const Facet f = inf == i ? dt_->mirror_facet(Facet{c, i}) : Facet{c, i};  // hull facet: from its finite cell
+      // Any record still reachable from either side is stale (its dual edge changed).
+      const Facet m = dt_->mirror_facet(f);
+      forget(ref(f.cell, f.index));
+      forget(ref(m.cell, m.index));
+      examine(f);
     }
   }
-  std::sort(todo.begin(), todo.end(), [](const auto& x, const auto& y) {
-    return std::tie(x.first.a, x.first.b, x.first.c) < std::tie(y.first.a, y.first.b, y.first.c);
-  });
-  for (std::size_t i = 0; i < todo.size(); ++i) {
-    if (i > 0 && todo[i].first == todo[i - 1].first) continue;
-    forget(todo[i].first, touched);  // a hull facet's finite cell may be old: drop any stale record
-    examine(todo[i].second, todo[i].first, touched);
-  }
+  touch_changed(touched);
 }
 
 namespace {

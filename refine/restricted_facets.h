@@ -8,9 +8,9 @@
 // of the destroyed cells and examines the facets of the created cells, and nothing else. That is
 // complete: a facet whose dual changed lost at least one of its two cells, so it is a facet of a
 // destroyed cell, and if it survives it is a facet of a created cell (the cell that replaced the
-// lost one). Cells are named by vertex triples, not by cell slots, so recycled slots are harmless;
-// the vertices of each live cell are mirrored here because the triangulation has already
-// forgotten a destroyed cell's vertices when it reports it.
+// lost one). Records hang off the cell facets (both sides of each facet); a destroyed cell's slot
+// still holds its references when update() runs, even if a created cell reuses the slot, because
+// the destroyed cells are processed first.
 //
 // The largest size is served by a max-heap with lazy deletion: an entry is valid while its
 // record's stamp is unchanged. Per vertex, the list of records incident to it (its umbrellas,
@@ -18,7 +18,8 @@
 //
 // Units: size is a length, sqrt(max(0, power distance)), comparable with ball radii and λ.
 // Cost: update is O(cells created + destroyed) facet examinations, each one segment or ray query
-// of the Domain; memory ~100 bytes per restricted facet plus 16 bytes per cell slot.
+// of the Domain, and no hashing; memory ~100 bytes per restricted facet plus 36 bytes per cell
+// slot.
 #pragma once
 
 #include <array>
@@ -27,7 +28,6 @@
 #include <queue>
 #include <span>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 #include <delpsc/delaunay/regular_triangulation.h>
@@ -62,8 +62,8 @@ class RestrictedFacets {
   /// restricted facet to `touched`.
   void rebuild(std::vector<PointId>& touched);
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
-  /// whose set of incident restricted facets may have changed, and every vertex of a created
-  /// cell (a new vertex must be checked even if it has no restricted facet).
+  /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
+  /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
   void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched);
 
   std::size_t size() const { return live_; }
@@ -92,36 +92,39 @@ class RestrictedFacets {
   }
 
  private:
-  struct Key {
-    PointId a, b, c;
-    friend bool operator==(const Key&, const Key&) = default;
+  /// The first record of a facet, as seen from one of its two cells; valid while that record's
+  /// stamp is unchanged (records are recycled, and a surviving neighbour's reference to a
+  /// forgotten record is simply left stale).
+  struct FacetRef {
+    std::uint32_t slot = kNoFacet;
+    std::uint32_t stamp = 0;
   };
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      std::uint64_t h = k.a * 0x9E3779B97F4A7C15ull;
-      h ^= (k.b + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
-      h ^= (k.c * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2));
-      return static_cast<std::size_t>(h);
-    }
-  };
-  static Key key_of(std::array<PointId, 3> v);
 
-  void forget(const Key& k, std::vector<PointId>& touched);
-  void project_on_facet_line(const Key& k, delaunay::VoronoiEdge& e) const;
-  void examine(delaunay::Facet f, const Key& k, std::vector<PointId>& touched);
+  void forget(FacetRef& ref);
+  void forget_chain(std::uint32_t first);
+  /// Appends to `touched` the vertices of the (triangle, patch) pairs in gone_ or made_ but not
+  /// both, and empties them.
+  void touch_changed(std::vector<PointId>& touched);
+  void project_on_facet_line(const std::array<PointId, 3>& t, delaunay::VoronoiEdge& e) const;
+  /// Examines finite facet f (its dual edge against the domain) and records it on both sides.
+  void examine(delaunay::Facet f);
   std::uint32_t new_record();
-  void mirror(delaunay::CellId c);
+  FacetRef& ref(delaunay::CellId c, int i) { return facet_refs_[4 * std::size_t{c} + static_cast<std::size_t>(i)]; }
 
   const delaunay::RegularTriangulation* dt_;
   const Domain* domain_;
   std::vector<RestrictedFacet> records_;
   std::vector<std::uint32_t> free_;
   std::size_t live_ = 0;
-  std::unordered_map<Key, std::uint32_t, KeyHash> head_;  // triangle -> first record
   std::vector<std::vector<std::uint32_t>> by_vertex_;
-  std::vector<std::array<PointId, 4>> cells_;  // mirror of live cells' vertices
-  std::vector<Key> examined_;                  // scratch: facets examined in this update
+  // Per cell slot, per facet index: its records. Indexing by cell facet instead of hashing the
+  // vertex triple: the facets to forget are exactly those of the destroyed cells, whose slots
+  // still hold the old references when update() runs, so no lookup by vertices is ever needed.
+  std::vector<FacetRef> facet_refs_;
+  std::vector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
+  std::uint32_t update_epoch_ = 0;
   std::vector<SurfaceHit> hits_;               // scratch
+  std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;
   Badness badness_;

@@ -80,8 +80,9 @@ TEST_CASE("coarse sizes") {
 }
 
 TEST_CASE("the paper's global choice in step 2(a)") {
-  // Forces RefineBall: the largest ball exceeds every restricted facet while D1/D2 fail.
-  CHECK(mesh_model(io::make_book(3, 4), 0.1, false).stats.ball_refinements > 0);
+  // At this size the largest ball exceeds every restricted facet while D1/D2 fail at the spine,
+  // so RefineBall must run (whether it does at a given size depends on the order of insertions).
+  CHECK(mesh_model(io::make_book(3, 4), 0.15, false).stats.ball_refinements > 0);
 }
 
 TEST_CASE("local step 2(a) refines balls where they are too large") {
