@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "error.h"
+#include "hidden_faces.h"
 
 namespace delpsc::io {
 
@@ -137,10 +138,13 @@ std::string format_preview_svg(const SurfaceMesh& mesh, const PreviewOptions& op
   items.reserve(mesh.triangles.size() + mesh.edges.size() + mesh.corners.size());
   std::unordered_map<std::uint64_t, double> edge_front;
   std::vector<double> vertex_front(depth);
+  const std::vector<bool> hidden = options.skip_hidden_back_faces ? hidden_back_faces(mesh, options.toward_viewer)
+                                                                  : std::vector<bool>(mesh.triangles.size(), false);
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     const double front = std::min({depth[tri[0]], depth[tri[1]], depth[tri[2]]});
-    items.push_back({(depth[tri[0]] + depth[tri[1]] + depth[tri[2]]) / 3, Item::kTriangle, t});
+    // A hidden triangle is not drawn; it still counts in the depths of the features it bounds.
+    if (!hidden[t]) items.push_back({(depth[tri[0]] + depth[tri[1]] + depth[tri[2]]) / 3, Item::kTriangle, t});
     for (int k = 0; k < 3; ++k) {
       vertex_front[tri[k]] = std::min(vertex_front[tri[k]], front);
       const auto [it, inserted] = edge_front.try_emplace(edge_key(tri[k], tri[(k + 1) % 3]), front);
@@ -174,8 +178,20 @@ std::string format_preview_svg(const SurfaceMesh& mesh, const PreviewOptions& op
   append_format(out, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"15\">", kMargin,
                 kTitleHeight - 8);
   out += title + "</text>\n";
-  // Each triangle is also stroked in its own fill colour: it hides the hairline seams
-  // anti-aliasing leaves between neighbours.
+  // Each triangle is also stroked, in its own fill colour: it hides the hairline seams
+  // anti-aliasing leaves between neighbours; or, to show the triangulation, darker.
+  double drawn_area = 0;
+  std::size_t drawn = 0;
+  for (const Item& item : items)
+    if (item.kind == Item::kTriangle) {
+      const auto& tri = mesh.triangles[item.index];
+      drawn_area += std::abs((px(tri[1]) - px(tri[0])) * (py(tri[2]) - py(tri[0])) -
+                             (px(tri[2]) - px(tri[0])) * (py(tri[1]) - py(tri[0]))) / 2;
+      ++drawn;
+    }
+  constexpr double kMinOutlinedArea = 12;  // px² on average
+  const double outline_shade =
+      options.outline_triangles && drawn > 0 && drawn_area >= kMinOutlinedArea * static_cast<double>(drawn) ? 0.8 : 1;
   out += "<g stroke-linejoin=\"round\" stroke-linecap=\"round\" stroke-width=\"0.6\">\n";
   for (const Item& item : items) {
     if (item.kind == Item::kTriangle) {
@@ -187,11 +203,14 @@ std::string format_preview_svg(const SurfaceMesh& mesh, const PreviewOptions& op
                              ? kUnlabelled
                              : kPalette[static_cast<std::size_t>(
                                    (mesh.triangle_patch[item.index] % 12 + 12) % 12)];
-      char colour[8];
+      char colour[8], stroke[8];
       std::snprintf(colour, sizeof colour, "#%02x%02x%02x", static_cast<int>(base[0] * shade),
                     static_cast<int>(base[1] * shade), static_cast<int>(base[2] * shade));
+      const double s = shade * outline_shade;
+      std::snprintf(stroke, sizeof stroke, "#%02x%02x%02x", static_cast<int>(base[0] * s),
+                    static_cast<int>(base[1] * s), static_cast<int>(base[2] * s));
       append_format(out, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"%s\" stroke=\"%s\"/>\n",
-                    px(tri[0]), py(tri[0]), px(tri[1]), py(tri[1]), px(tri[2]), py(tri[2]), colour, colour);
+                    px(tri[0]), py(tri[0]), px(tri[1]), py(tri[1]), px(tri[2]), py(tri[2]), colour, stroke);
     } else if (item.kind == Item::kEdge) {
       const auto [a, b] = mesh.edges[item.index];
       append_format(out, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"2\"/>\n",

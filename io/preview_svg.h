@@ -9,7 +9,9 @@
 // The painter's algorithm is exact for meshes whose triangles do not overlap cyclically in
 // depth, good enough for a preview otherwise. A title line is written at the top.
 //
-// Cost: O(T log T) for T triangles; about 90 bytes of SVG per triangle.
+// Back faces of closed components are left out (hidden_faces.h). Cost: O(T log T) for T
+// triangles; about 90 bytes of SVG per triangle drawn (coordinates rounded to 0.1 px), so about
+// 4.5 MB for a closed 100,000-triangle mesh.
 #pragma once
 
 #include <string>
@@ -27,6 +29,13 @@ struct PreviewOptions {
   /// Direction from the model towards the viewer; need not be unit length, must not be zero
   /// nor vertical (the picture's up is the projection of +z).
   Vec3 toward_viewer = Vec3(0.55, -1.0, 0.75);
+  /// Leave out the triangles hidden_back_faces() proves invisible (back faces of closed,
+  /// consistently oriented components): about half the file for a closed model, same picture.
+  bool skip_hidden_back_faces = true;
+  /// Outline each triangle in a darker shade of its fill, so the triangulation shows (for
+  /// meshes; the feature preview leaves it off). Applied only when the triangles drawn are
+  /// 12 px² or larger on average: finer meshes would turn into dark noise.
+  bool outline_triangles = false;
 };
 
 /// The SVG document. Throws io::Error when the mesh breaks the SurfaceMesh invariants, or

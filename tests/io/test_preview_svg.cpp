@@ -1,6 +1,7 @@
 // The SVG preview (io/preview_svg.h): a well-formed document with one polygon per triangle, one
 // line per feature edge and one dot per corner; colours that follow the patch ids; triangles
-// written back to front along the viewing direction; bad meshes and options refused.
+// written back to front along the viewing direction; back faces of closed surfaces left out;
+// bad meshes and options refused.
 #include <doctest/doctest.h>
 
 #include <regex>
@@ -10,6 +11,7 @@
 #include <delpsc/io/error.h>
 #include <delpsc/io/preview_svg.h>
 #include <delpsc/io/sample_part.h>
+#include <delpsc/io/shapes.h>
 
 #include "support/model_files.h"
 
@@ -165,4 +167,22 @@ TEST_CASE("preview: bad meshes and options are refused") {
   CHECK_THROWS_AS(io::format_preview_svg(mesh, options), std::invalid_argument);
   CHECK(test::io_error_of([&] { io::write_preview_svg("/nonexistent-dir/x.svg", mesh); }).find("cannot open") !=
         std::string::npos);
+}
+
+TEST_CASE("preview: back faces of a closed surface are left out, those of an open one kept") {
+  io::SurfaceMesh sphere = io::surface_mesh_from(io::make_sphere(8));
+  auto polygons = [](const std::string& svg) {
+    std::size_t n = 0;
+    for (const auto& e : parse_elements(svg)) n += e.name == "polygon";
+    return n;
+  };
+  io::PreviewOptions options;
+  const std::size_t culled = polygons(io::format_preview_svg(sphere, options));
+  CHECK(culled > sphere.triangles.size() / 3);
+  CHECK(culled < 2 * sphere.triangles.size() / 3);
+  options.skip_hidden_back_faces = false;
+  CHECK(polygons(io::format_preview_svg(sphere, options)) == sphere.triangles.size());
+  // The sample part (its fin makes edges of three triangles): nothing is left out.
+  const io::SurfaceMesh part = io::surface_mesh_from(io::make_sample_part(16));
+  CHECK(polygons(io::format_preview_svg(part, io::PreviewOptions{})) == part.triangles.size());
 }
