@@ -25,6 +25,15 @@ struct PatchSkeleton {
   std::size_t vertices = 0, edges = 0, triangles = 0;
   int euler = 0;                   ///< V - E + F of Skl²|σ
   std::size_t boundary_loops = 0;  ///< connected components of its boundary edges
+  /// Every edge in at most two of its triangles and the triangles around each vertex one disk
+  /// (the 2-manifold part of G1, without the boundary and the distance to the domain).
+  bool manifold = true;
+  /// The same two figures for Skl²|σ cut open along its slits (curves with σ on both sides),
+  /// the way protect::Patch counts the input's patches: equal to euler and boundary_loops when
+  /// σ has no slit, and then G2 makes them the input's. An interior slit arc makes the cut
+  /// surface's Euler characteristic one less and adds one boundary loop.
+  int cut_euler = 0;
+  std::size_t cut_boundary_loops = 0;
 };
 
 struct SkeletonReport {
