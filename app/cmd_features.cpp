@@ -8,6 +8,7 @@
 
 #include "command.h"
 #include "model_input.h"
+#include "output_paths.h"
 
 namespace delpsc::app {
 
@@ -24,8 +25,7 @@ struct FeaturesOptions {
 int run(const FeaturesOptions& o, const GlobalOptions& g) {
   if (!o.output.empty() && !io::mesh_format_from_path(o.output))
     throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .vtu, .mesh, .off, .obj, .ply or .stl)"};
-  if (!o.preview.empty() && !o.preview.ends_with(".svg"))
-    throw Failure{kBadInput, "--preview " + o.preview + ": the preview is an SVG picture (name it *.svg)"};
+  if (!o.preview.empty()) check_preview_path(o.preview);
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
   const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);

@@ -8,6 +8,8 @@
 #include <functional>
 #include <string>
 
+#include "report.h"
+
 namespace delpsc::app {
 
 /// Exit codes: 0 success; 1 the job ran but a check it was asked for failed, or an internal
@@ -18,6 +20,7 @@ enum ExitCode : int { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
 struct GlobalOptions {
   bool quiet = false;    ///< -q: only the key=value report and errors
   int verbosity = 0;     ///< -v (repeatable): more detail on stderr
+  std::string report_path;  ///< --report FILE.json: the final report also as JSON (main writes it)
 };
 
 /// Thrown inside a subcommand to end it with a message on stderr and an exit code.
@@ -26,18 +29,13 @@ struct Failure {
   std::string message;
 };
 
-/// Prints one "key=value" line of the final report on stdout.
-inline void report(const char* key, const std::string& value) {
-  std::printf("%s=%s\n", key, value.c_str());
-}
-inline void report(const char* key, double value) {
-  std::printf("%s=%.6g\n", key, value);
-}
-inline void report(const char* key, long long value) { std::printf("%s=%lld\n", key, value); }
-inline void report(const char* key, std::size_t value) {
-  std::printf("%s=%zu\n", key, value);
-}
-inline void report(const char* key, bool value) { std::printf("%s=%s\n", key, value ? "true" : "false"); }
+/// Prints one "key=value" line of the final report on stdout and records it for --report
+/// (report.h).
+inline void report(const char* key, const std::string& value) { final_report().add(key, value); }
+inline void report(const char* key, double value) { final_report().add(key, value); }
+inline void report(const char* key, long long value) { final_report().add(key, value); }
+inline void report(const char* key, std::size_t value) { final_report().add(key, value); }
+inline void report(const char* key, bool value) { final_report().add(key, value); }
 
 /// A subcommand registers its options on `app` and returns the function that runs it.
 using Runner = std::function<int(const GlobalOptions&)>;

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "command.h"
+#include "json_writer.h"
+#include "output_paths.h"
 #include "version.h"
 
 using namespace delpsc::app;
@@ -21,6 +23,11 @@ int main(int argc, char** argv) {
   auto add = [&](const char* name, const char* about, Runner (*reg)(CLI::App&)) {
     CLI::App* sub = app.add_subcommand(name, about);
     commands.emplace_back(sub, reg(*sub));
+    // One mechanism for every subcommand: its key=value lines are recorded (report.h) and main
+    // writes them as JSON at the end, whatever the exit code.
+    sub->add_option("--report", global.report_path,
+                    "Also write the final report as a JSON object to this file (keys as on stdout, plus "
+                    "command, input, exit_code, error and structured parts)");
   };
   add("info", "Model statistics: counts, bounding box, defects", register_info);
   add("features", "Find the corners, curves and patches of a polygon model", register_features);
@@ -34,18 +41,35 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kOk : kBadInput;  // --help and --version exit 0; usage errors exit 2
   }
+  int code = kOk;
+  std::string error;
   try {
+    if (!global.report_path.empty()) check_output_path(global.report_path, "--report");
     for (auto& [sub, run] : commands)
-      if (sub->parsed()) return run(global);
+      if (sub->parsed()) {
+        final_report().add_json("command", json_string(sub->get_name()));
+        final_report().add_json("version", json_string(delpsc::kVersion));
+        if (const CLI::Option* in = sub->get_option_no_throw("IN"); in && in->count() > 0)
+          final_report().add_json("input", json_string(in->as<std::string>()));
+        code = run(global);
+      }
   } catch (const Failure& f) {
-    std::fprintf(stderr, "delpsc: %s\n", f.message.c_str());
-    return f.code;
+    error = f.message, code = f.code;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "delpsc: out of memory\n");
-    return kCheckFailed;
+    error = "out of memory", code = kCheckFailed;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "delpsc: internal error: %s\n", e.what());
-    return kCheckFailed;
+    error = std::string("internal error: ") + e.what(), code = kCheckFailed;
   }
-  return kOk;
+  if (!error.empty()) std::fprintf(stderr, "delpsc: %s\n", error.c_str());
+  // A report is written even when the job failed (exit_code and error say how), except when
+  // --report itself is what is wrong.
+  if (!global.report_path.empty() && !error.starts_with("--report")) {
+    final_report().add_json("exit_code", std::to_string(code));
+    if (!error.empty()) final_report().add_json("error", json_string(error));
+    if (!final_report().write_json(global.report_path)) {
+      std::fprintf(stderr, "delpsc: --report %s: write failed\n", global.report_path.c_str());
+      return kBadInput;
+    }
+  }
+  return code;
 }

@@ -12,6 +12,12 @@ expect 0 "zero-area" -- info "$TMP/sheet.off"
 [[ "$(value boundary_edges)" == "4" ]] || fail "boundary_edges: $(value boundary_edges)"
 [[ "$(value bbox)" == "0 0 0 1 1 0" ]] || fail "bbox: $(value bbox)"
 
+# --report (shared by every subcommand): the same figures as JSON.
+expect 0 "" -- info "$TMP/sheet.off" --report "$TMP/info.json"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))
+sys.exit(not (r["command"] == "info" and r["triangles"] == 3 and r["bbox"] == "0 0 0 1 1 0" and r["exit_code"] == 0))' \
+  "$TMP/info.json" || fail "info --report: $(cat "$TMP/info.json")"
+
 expect 2 "cannot open" -- info "$TMP/none.ply"
 printf 'ply\nformat ascii 1.0\nelement vertex 99999999999\n' >"$TMP/absurd.ply"
 expect 2 "absurd.ply" -- info "$TMP/absurd.ply"
