@@ -17,6 +17,13 @@ expect 0 "" -- info "$TMP/sheet.off" --report "$TMP/info.json"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))
 sys.exit(not (r["command"] == "info" and r["triangles"] == 3 and r["bbox"] == "0 0 0 1 1 0" and r["exit_code"] == 0))' \
   "$TMP/info.json" || fail "info --report: $(cat "$TMP/info.json")"
+# A file name with a quote, a backslash, a tab and a byte that is not UTF-8: valid JSON all the
+# same, the bad byte as U+FFFD.
+odd="$TMP/"$'q"b\\t\tx\xff.off'
+cp "$TMP/sheet.off" "$odd"
+expect 0 "" -- info "$odd" --report "$TMP/odd.json"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1], encoding="utf-8"))
+sys.exit(not r["input"].endswith("q\"b\\t\tx\ufffd.off"))' "$TMP/odd.json" || fail "info --report, odd name: $(cat "$TMP/odd.json")"
 
 expect 2 "cannot open" -- info "$TMP/none.ply"
 printf 'ply\nformat ascii 1.0\nelement vertex 99999999999\n' >"$TMP/absurd.ply"
