@@ -3,7 +3,8 @@
 #   scripts/install-deps.sh            library, command, tests' oracle, benchmarks
 #   scripts/install-deps.sh --cgal     also libcgal-dev, for the optional cross-checks
 set -euo pipefail
-packages=(cmake g++ make libeigen3-dev libnanoflann-dev doctest-dev libbenchmark-dev libgmp-dev libcli11-dev)
+# python3: the command tests validate the JSON reports with python3 -m json.tool.
+packages=(cmake g++ make libeigen3-dev libnanoflann-dev doctest-dev libbenchmark-dev libgmp-dev libcli11-dev python3)
 if [[ "${1:-}" == "--cgal" ]]; then packages+=(libcgal-dev); fi
 
 missing=()
