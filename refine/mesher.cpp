@@ -146,7 +146,12 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
       refine_ball(places_[v].ball);
       return true;
     }
-    return false;  // x on top of an unweighted vertex: nothing to insert
+    // x on an unweighted vertex of t: impossible for a point of V_t (it would be power-
+    // equidistant at distance size > 0); the dual edge was computed too inaccurately (a nearly
+    // flat cell). Stop offering this record, as for a point found off V_t below.
+    ++stats_.rejected_inaccurate;
+    facets_.discard(slot);
+    return true;
   }
   const PointId id = static_cast<PointId>(dt_.number_of_points());
   VertexPlace place;
@@ -283,7 +288,12 @@ void Mesher::run() {
     const std::uint32_t top = facets_.largest();
     const double d1 = top == kNoFacet ? -1 : facets_[top].size;
     if (!failing_d12_.empty()) {
-      if (options_.local_disk_refinement && refine_around(*failing_d12_.begin())) continue;
+      // Re-verify before acting: an entry goes stale if its vertex's verdict changed without
+      // its (triangle, patch) pairs changing (ball adjacency after a RefineBall elsewhere).
+      const PointId p = *failing_d12_.begin();
+      recheck(p);
+      if (failing_d12_.count(p) == 0) continue;
+      if (options_.local_disk_refinement && refine_around(p)) continue;
       const BallKey big = balls_->largest();
       const double d2 = big == kNoBallKey ? -1 : balls_->ball(big).radius;
       if (top != kNoFacet && d1 >= d2) {
@@ -328,8 +338,20 @@ void Mesher::run() {
       stats_.message = std::string(to_string(which)) + " criterion: point cannot be inserted";
       return;
     }
-    return;
+    // Nothing flagged: confirm with a full pass (re-checks are incremental, see apply) before
+    // declaring the disk condition satisfied everywhere.
+    if (!sweep_failures()) return;
   }
+}
+
+bool Mesher::sweep_failures() {
+  ++stats_.full_sweeps;
+  std::size_t found = 0;
+  for (PointId p = 0; p < places_.size(); ++p) {
+    recheck(p);
+    found += failing_d12_.count(p) + failing_d34_.count(p);
+  }
+  return found > 0;
 }
 
 std::vector<std::pair<PointId, DiskVerdict>> Mesher::failing_vertices() const {

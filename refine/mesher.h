@@ -81,6 +81,7 @@ struct MesherStats {
   std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
+  std::size_t full_sweeps = 0;          ///< full re-checks of the disk condition (>= 1 per run)
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)
   std::string message;
@@ -116,6 +117,7 @@ class Mesher {
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  bool sweep_failures();          // re-checks every vertex; true if some fails
   void refine_ball(BallKey key);
   PointId insert_ball(BallKey key);
   void remove_point(PointId p);

@@ -80,9 +80,22 @@ TEST_CASE("coarse sizes") {
 }
 
 TEST_CASE("the paper's global choice in step 2(a)") {
-  // At this size the largest ball exceeds every restricted facet while D1/D2 fail at the spine,
-  // so RefineBall must run (whether it does at a given size depends on the order of insertions).
-  CHECK(mesh_model(io::make_book(3, 4), 0.15, false).stats.ball_refinements > 0);
+  // A prism with a curve 2% of the side long, balls protected at 30% of the diagonal and facets
+  // refined to 2%: D1/D2 fail around the short curve while every restricted facet is already
+  // smaller than the largest ball, so the global rule must RefineBall (d2 > d1). (On most models
+  // the disk condition holds even around big balls and RefineBall is never needed.)
+  refine::PolygonDomain domain(io::make_short_curve_prism(0.02, 0.1));
+  const double diag = (domain.bounding_box().hi - domain.bounding_box().lo).norm();
+  protect::BallSet set = protect::protect(domain.complex(), 0.3 * diag);
+  refine::ProtectedBalls balls(set);
+  refine::MesherOptions options;
+  options.facet_size = 0.02 * diag;
+  options.max_vertices = 30000;
+  options.local_disk_refinement = false;
+  refine::Mesher mesher(domain, balls, options);
+  test::run_mesher_and_check(mesher);
+  test::check_g1(mesher.output(), domain);
+  CHECK(mesher.stats().ball_refinements > 0);
 }
 
 TEST_CASE("local step 2(a) refines balls where they are too large") {
