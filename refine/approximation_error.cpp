@@ -1,0 +1,292 @@
+#include "approximation_error.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/constructions.h>
+
+namespace delpsc::refine {
+
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+/// For each triangle and each of its edges k (opposite corner k), a triangle across that edge:
+/// the other one of a manifold edge, the next one around a non-manifold edge (they form a
+/// cycle), kNone on the boundary. O(T log T).
+std::vector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<const Triangle> triangles) {
+  struct HalfEdge {
+    std::uint32_t lo, hi, triangle, edge;
+  };
+  std::vector<HalfEdge> half;
+  half.reserve(3 * triangles.size());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t u = triangles[t][(k + 1) % 3], v = triangles[t][(k + 2) % 3];
+      if (u != v) half.push_back({std::min(u, v), std::max(u, v), t, k});
+    }
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.triangle < y.triangle;
+  });
+  std::vector<std::array<std::uint32_t, 3>> out(triangles.size(), {kNone, kNone, kNone});
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i;
+    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
+    for (std::size_t k = i; j - i > 1 && k < j; ++k)
+      if (half[k].triangle != half[k + 1 < j ? k + 1 : i].triangle)  // not a segment's own edge twice
+        out[half[k].triangle][half[k].edge] = half[k + 1 < j ? k + 1 : i].triangle;
+    i = j;
+  }
+  return out;
+}
+
+/// The largest distance from samples to a set of triangles `to` (indices into `vertices`; `tree`
+/// is built over them). Most samples cannot raise the maximum, and showing it needs no tree
+/// query: starting from the triangle that settled the previous sample (samples come in spatially
+/// coherent order, a triangle's or a segment's at a time), a greedy walk across the edge or
+/// vertex holding the closest point, as in point location, usually reaches a triangle no
+/// farther than the largest distance so far within a step or two. Only the samples the walk does
+/// not settle are queried, and the result is the one querying every sample would give (up to the
+/// rounding of the distances compared). On the CGAL demo models meshed at λ = 1% and sampled at
+/// h = λ/2 this leaves one query in 40 to 60 samples.
+class FarthestSample {
+ public:
+  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree)
+      : vertices_(vertices), to_(to), tree_(tree), neighbours_(edge_neighbours(to)) {}
+
+  void sample(const Vec3& p) {
+    if (result_.samples++ > 0 && walk(p)) return;
+    const auto closest = tree_.closest_point(p);
+    const double distance = closest ? std::sqrt(closest->squared_distance) : kInfinity;
+    if (closest) current_ = closest->triangle;
+    if (result_.samples == 1 || distance > result_.distance) {
+      result_.distance = distance;
+      result_.where = p;
+      largest_squared_ = distance * distance;
+    }
+  }
+
+  const OneSidedDistance& result() const { return result_; }
+
+ private:
+  /// Enough for a sample next to the previous one; a longer way is left to the tree.
+  static constexpr int kWalkSteps = 4;
+  struct Closest {
+    double squared_distance;
+    kernel::TriangleFeature feature;
+  };
+
+  Closest closest_on(const Vec3& p, std::uint32_t t) const {
+    const Triangle& c = to_[t];
+    const auto q = kernel::closest_point_on_triangle(p, vertices_[c[0]], vertices_[c[1]], vertices_[c[2]]);
+    return {(q.point - p).squaredNorm(), q.feature};
+  }
+
+  /// True if the walk from the current triangle finds one within the largest distance of p.
+  bool walk(const Vec3& p) {
+    if (current_ == kNone) return false;
+    std::uint32_t t = current_;
+    Closest here = closest_on(p, t);
+    for (int step = 0;; ++step) {
+      if (here.squared_distance <= largest_squared_) {
+        current_ = t;
+        return true;
+      }
+      if (step == kWalkSteps || here.feature.kind == kernel::FeatureKind::face) return false;
+      // Across the edge holding the closest point, or either edge at the vertex holding it.
+      const int k = here.feature.index;
+      const std::array<int, 2> edges = here.feature.kind == kernel::FeatureKind::edge
+                                           ? std::array<int, 2>{k, -1}
+                                           : std::array<int, 2>{(k + 1) % 3, (k + 2) % 3};
+      std::uint32_t next = kNone;
+      Closest best = here;
+      for (const int e : edges) {
+        if (e < 0 || neighbours_[t][e] == kNone) continue;
+        const Closest c = closest_on(p, neighbours_[t][e]);
+        if (c.squared_distance < best.squared_distance) {
+          best = c;
+          next = neighbours_[t][e];
+        }
+      }
+      if (next == kNone) return false;  // a local minimum that is not close enough
+      t = next;
+      here = best;
+    }
+  }
+
+  std::span<const Vec3> vertices_;
+  std::span<const Triangle> to_;
+  const kernel::AabbTree& tree_;
+  std::vector<std::array<std::uint32_t, 3>> neighbours_;
+  std::uint32_t current_ = kNone;
+  OneSidedDistance result_;
+  double largest_squared_ = 0;  // result_.distance squared
+};
+
+/// Pieces of step <= h along a length (at least 1).
+std::size_t pieces(double length, double h) {
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
+}
+
+/// The surface samples of the header: per triangle its corners not sampled yet (so each vertex
+/// once), then its barycentric grid of step 1/n without the corners.
+void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> triangles, double h, FarthestSample& to) {
+  std::vector<std::uint8_t> sampled(vertices.size(), 0);
+  for (const Triangle& t : triangles) {
+    for (const std::uint32_t v : t)
+      if (!sampled[v]) {
+        sampled[v] = 1;
+        to.sample(vertices[v]);
+      }
+    const Vec3 &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
+    const std::size_t n = pieces(std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()})), h);
+    const double step = 1.0 / static_cast<double>(n);
+    for (std::size_t i = 0; i <= n; ++i)
+      for (std::size_t j = 0; i + j <= n; ++j) {
+        const std::size_t k = n - i - j;
+        if (i == n || j == n || k == n) continue;  // a corner
+        to.sample((static_cast<double>(i) * step) * a + (static_cast<double>(j) * step) * b +
+                  (static_cast<double>(k) * step) * c);
+      }
+  }
+}
+
+/// The curve samples of the header for segments stored as (u, v, v): both ends and each segment
+/// cut into pieces of length <= h.
+void sample_polyline(std::span<const Vec3> vertices, std::span<const Triangle> segments, double h, FarthestSample& to) {
+  for (const Triangle& s : segments) {
+    const Vec3 &a = vertices[s[0]], &b = vertices[s[1]];
+    const std::size_t n = pieces((b - a).norm(), h);
+    for (std::size_t k = 0; k <= n; ++k) to.sample(a + (static_cast<double>(k) / static_cast<double>(n)) * (b - a));
+  }
+}
+
+void keep_larger(OneSidedDistance& total, const OneSidedDistance& d) {
+  if (d.samples == 0) return;
+  if (total.samples == 0 || d.distance > total.distance) {
+    total.distance = d.distance;
+    total.where = d.where;
+  }
+  total.samples += d.samples;
+}
+
+void validate(const io::SurfaceMesh& output) {
+  const std::size_t nv = output.vertices.size();
+  for (const auto& t : output.triangles)
+    for (const std::uint32_t v : t)
+      if (v >= nv) throw std::invalid_argument("measure_approximation: triangle vertex " + std::to_string(v) + " out of range");
+  for (const auto& e : output.edges)
+    for (const std::uint32_t v : e)
+      if (v >= nv) throw std::invalid_argument("measure_approximation: edge vertex " + std::to_string(v) + " out of range");
+  if (!output.edge_curve.empty() && output.edge_curve.size() != output.edges.size())
+    throw std::invalid_argument("measure_approximation: edge_curve has " + std::to_string(output.edge_curve.size()) +
+                                " labels for " + std::to_string(output.edges.size()) + " edges");
+}
+
+/// The output's feature edges of each curve as (u, v, v), flat: curve c's are
+/// segments[offsets[c] .. offsets[c + 1]). Edges labelled with no input curve are counted.
+struct EdgesByCurve {
+  std::vector<std::size_t> offsets;
+  std::vector<Triangle> segments;
+  std::size_t unlabelled = 0;
+  Vec3 first_unlabelled = Vec3::Zero();
+};
+
+EdgesByCurve group_edges(const io::SurfaceMesh& output, std::uint32_t curve_count) {
+  EdgesByCurve g;
+  g.offsets.assign(curve_count + 1, 0);
+  const auto curve_of = [&](std::size_t e) -> std::int64_t {
+    if (output.edge_curve.empty()) return -1;
+    const std::int32_t c = output.edge_curve[e];
+    return c >= 0 && static_cast<std::uint32_t>(c) < curve_count ? c : -1;
+  };
+  for (std::size_t e = 0; e < output.edges.size(); ++e) {
+    const std::int64_t c = curve_of(e);
+    if (c >= 0) {
+      ++g.offsets[static_cast<std::size_t>(c) + 1];
+    } else if (g.unlabelled++ == 0) {
+      g.first_unlabelled = output.vertices[output.edges[e][0]];
+    }
+  }
+  for (std::uint32_t c = 0; c < curve_count; ++c) g.offsets[c + 1] += g.offsets[c];
+  g.segments.resize(g.offsets[curve_count]);
+  std::vector<std::size_t> next(g.offsets.begin(), g.offsets.end() - 1);
+  for (std::size_t e = 0; e < output.edges.size(); ++e) {
+    const std::int64_t c = curve_of(e);
+    if (c < 0) continue;
+    const auto [u, v] = output.edges[e];
+    g.segments[next[static_cast<std::size_t>(c)]++] = {u, v, v};
+  }
+  return g;
+}
+
+}  // namespace
+
+double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
+
+double ApproximationError::feature_distance() const {
+  return std::max(feature_input_to_output.distance, feature_output_to_input.distance);
+}
+
+ApproximationError measure_approximation(const io::SurfaceMesh& output, const PolygonDomain& input,
+                                         const ApproximationOptions& options) {
+  const double h = options.sample_spacing;
+  if (!(h > 0) || !std::isfinite(h))
+    throw std::invalid_argument("measure_approximation: sample spacing must be positive and finite, not " + std::to_string(h));
+  validate(output);
+  const protect::Complex& complex = input.complex();
+
+  ApproximationError e;
+  const kernel::Box3 box = input.bounding_box();
+  e.diagonal = box.empty() ? 0 : box.diagonal();
+  e.sample_spacing = h;
+
+  const kernel::AabbTree output_tree(output.vertices, output.triangles);
+  FarthestSample to_input(complex.vertices, complex.triangles, input.tree());
+  sample_surface(output.vertices, output.triangles, h, to_input);
+  e.output_to_input = to_input.result();
+  FarthestSample to_output(output.vertices, output.triangles, output_tree);
+  sample_surface(complex.vertices, complex.triangles, h, to_output);
+  e.input_to_output = to_output.result();
+
+  const auto curve_count = static_cast<std::uint32_t>(complex.curve_count());
+  const EdgesByCurve edges = group_edges(output, curve_count);
+  std::vector<Triangle> input_segments;
+  for (std::uint32_t c = 0; c < curve_count; ++c) {
+    const auto polyline = complex.curve_polyline(c);
+    input_segments.clear();
+    for (std::size_t i = 0; i + 1 < polyline.size(); ++i) input_segments.push_back({polyline[i], polyline[i + 1], polyline[i + 1]});
+    const std::span<const Triangle> output_segments(edges.segments.data() + edges.offsets[c], edges.offsets[c + 1] - edges.offsets[c]);
+    const kernel::AabbTree input_curve(complex.vertices, input_segments);
+    const kernel::AabbTree output_curve(output.vertices, output_segments);
+
+    CurveApproximation& a = e.curves.emplace_back();
+    a.curve = c;
+    a.output_edges = output_segments.size();
+    FarthestSample to_output_curve(output.vertices, output_segments, output_curve);
+    sample_polyline(complex.vertices, input_segments, h, to_output_curve);
+    a.input_to_output = to_output_curve.result();
+    FarthestSample to_input_curve(complex.vertices, input_segments, input_curve);
+    sample_polyline(output.vertices, output_segments, h, to_input_curve);
+    a.output_to_input = to_input_curve.result();
+    keep_larger(e.feature_input_to_output, a.input_to_output);
+    keep_larger(e.feature_output_to_input, a.output_to_input);
+  }
+  e.unlabelled_edges = edges.unlabelled;
+  if (edges.unlabelled > 0) {
+    // An edge of no input curve is at no finite distance from "its" curve.
+    e.feature_output_to_input.distance = kInfinity;
+    e.feature_output_to_input.where = edges.first_unlabelled;
+  }
+  return e;
+}
+
+}  // namespace delpsc::refine
