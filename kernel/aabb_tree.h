@@ -6,8 +6,10 @@
 // child of node i is node i + 1 and the right child's index is stored; a leaf holds a contiguous
 // range of at most kLeafSize triangles of the tree's own copy of the triangle corners, stored in
 // leaf order next to their original ids. The tree therefore does not refer to the caller's arrays
-// after construction. Built by median split along the longest axis of the triangle centroids'
-// box (nth_element), so the depth is at most ceil(log2(n / kLeafSize)) + 1 whatever the input.
+// after construction. Built top-down along the longest axis of the triangle centroids' box, each
+// cut chosen by the binned surface area heuristic (kSahBins bins) down to depth kSahDepth and at
+// the median (nth_element) below it or when SAH cannot cut, so the depth is at most
+// kSahDepth + ceil(log2(n / kLeafSize)) + 1 whatever the input.
 //
 // Robustness: box tests are floating point but conservative (see segment_may_hit_box in the
 // .cpp: every slab parameter is widened by its proven rounding error), so a triangle is never
@@ -83,6 +85,9 @@ class AabbTree {
  public:
   /// Maximum number of triangles per leaf.
   static constexpr std::uint32_t kLeafSize = 4;
+  /// Bins of the surface area heuristic, and the depth from which only median splits are made.
+  static constexpr int kSahBins = 16;
+  static constexpr int kSahDepth = 24;
 
   AabbTree() = default;
 
@@ -140,9 +145,14 @@ class AabbTree {
     std::array<float, 3> centroid;
     std::uint32_t id;
   };
-  /// Builds the subtree over items[begin, end) and returns its exact box.
-  Box3 build_node(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end,
+  /// Builds the subtree over items[begin, end) at `depth` (root 0) and returns its exact box.
+  Box3 build_node(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int depth,
                   std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
+  /// Partitions items[begin, end) at the binned-SAH cut along `axis` (centroids in [lo, hi]) and
+  /// returns the first item of the right part; begin when no SAH split applies.
+  static std::uint32_t sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
+                                 float lo, float hi, int depth, std::span<const Vec3> vertices,
+                                 std::span<const std::array<std::uint32_t, 3>> triangles);
   void intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
                       std::vector<TriangleIntersection>& out) const;
 

@@ -91,7 +91,7 @@ TEST_CASE("segment and ray queries equal brute force on random soups") {
   const Soup s = random_soup(rng, 3000, 0.05);
   const AabbTree tree(s.vertices, s.triangles);
   REQUIRE(tree.size() == s.triangles.size());
-  CHECK(tree.depth() <= 12);  // median split: ceil(log2(3000 / 4)) + 1 = 11
+  CHECK(tree.depth() <= AabbTree::kSahDepth + 11);  // ceil(log2(3000 / 4)) + 1 = 11 median levels
   std::uniform_real_distribution<double> u(-0.2, 1.2);
   std::size_t total = 0;
   for (int q = 0; q < 300; ++q) {
@@ -106,6 +106,36 @@ TEST_CASE("segment and ray queries equal brute force on random soups") {
     CHECK(ids_of(hits) == brute_ray(s, a, b - a));
   }
   CHECK(total > 300);  // the segments do meet triangles: the comparison is not vacuous
+}
+
+// Triangles at x = 2^-k, each 2^-k across, all around the x axis: every SAH cut peels a few off
+// the far end, so the tree would get as deep as the soup is long without the median fallback
+// below kSahDepth (the traversal stack is fixed-size).
+TEST_CASE("a geometrically graded soup keeps the depth bound and the brute-force answers") {
+  Soup s;
+  const int n = 120;  // 2^-120 is still a normal float: the centroids stay distinct
+  for (int k = 0; k < n; ++k) {
+    const double x = std::ldexp(1.0, -k);
+    const auto base = static_cast<std::uint32_t>(s.vertices.size());
+    s.vertices.emplace_back(x, -x, -x);
+    s.vertices.emplace_back(x, 2 * x, -x);
+    s.vertices.emplace_back(x, -x, 2 * x);
+    s.triangles.push_back({base, base + 1, base + 2});
+  }
+  const AabbTree tree(s.vertices, s.triangles);
+  CHECK(tree.depth() > 12);  // deeper than a median split: SAH did cut unevenly
+  CHECK(tree.depth() <= AabbTree::kSahDepth + 6 + 1);  // ceil(log2(120 / 4)) = 5 median levels
+  std::vector<TriangleIntersection> hits;
+  tree.intersect_segment(Vec3(-1, 0, 0), Vec3(2, 0, 0), hits);
+  CHECK(ids_of(hits).size() == static_cast<std::size_t>(n));
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> off(-1e-6, 1e-6);
+  for (int q = 0; q < 100; ++q) {
+    const Vec3 a(-1, off(rng), off(rng)), b(2, off(rng), off(rng));
+    hits.clear();
+    tree.intersect_segment(a, b, hits);
+    CHECK(ids_of(hits) == brute_segment(s, a, b));
+  }
 }
 
 TEST_CASE("segments exactly through grid edges and vertices lose no triangle") {
