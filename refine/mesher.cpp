@@ -153,12 +153,17 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     facets_.discard(slot);
     return true;
   }
+  const CellId hint = dt_.incident_cell(r.vertices[0]);
+  if (far_off_dual_edge(r, hint)) {
+    ++stats_.rejected_inaccurate;
+    facets_.discard(slot);
+    return true;
+  }
   const PointId id = static_cast<PointId>(dt_.number_of_points());
   VertexPlace place;
   place.kind = VertexPlace::Kind::surface;
   place.patch = r.patch;
   places_.push_back(place);
-  const CellId hint = dt_.incident_cell(r.vertices[0]);
   dt_.insert(WeightedPoint::from(r.point), &changes_, hint);
   if (dt_.status(id) != PointStatus::vertex) {
     // The point is not on V_t after all: the dual edge's ends, orthocentres of nearly flat cells,
@@ -172,6 +177,27 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
   apply(changes_);
   recheck(id);  // the facets' update names only vertices whose umbrellas changed
   return true;
+}
+
+bool Mesher::far_off_dual_edge(const RestrictedFacet& r, CellId hint) const {
+  // A point of V_t has t's vertices as its power-nearest. One computed through a nearly flat
+  // cell can be grossly wrong: on the crossed ridges at 4% a facet of four co-circular balls
+  // got the point of another face 1.09 away, inserted, then re-offered the same point by the
+  // next facet of that circle, a cluster of points 1e-16 apart whose tiny facets failed D2
+  // forever (400,000 vertices). Any vertex much nearer to the point proves it off V_t; the
+  // vertices of the cell containing it are where such a one sits. The factor 1/2 ignores the
+  // rounding of a point genuinely near an end of V_t (a fourth vertex as near as t's).
+  const auto power = [&](PointId q) {
+    const WeightedPoint& w = dt_.point(q);
+    return (w.point() - r.point).squaredNorm() - w.w;
+  };
+  const double on_edge = power(r.vertices[0]);
+  const CellId c = dt_.locate(r.point, hint);
+  for (int i = 0; i < 4; ++i) {
+    const PointId v = dt_.vertex(c, i);
+    if (v != delaunay::kInfiniteVertex && power(v) < 0.5 * on_edge) return true;
+  }
+  return false;
 }
 
 PointId Mesher::insert_ball(BallKey key) {

@@ -116,6 +116,7 @@ class Mesher {
   void apply(const delaunay::ChangeSet& changes);  // facets, then re-check touched vertices
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
+  bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId hint) const;  // a gross error
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
   bool sweep_failures();          // re-checks every vertex; true if some fails
   void refine_ball(BallKey key);
