@@ -15,6 +15,7 @@
 #include <delpsc/refine/protected_balls.h>
 #include <delpsc/refine/skeleton_check.h>
 
+#include "support/acceptance.h"
 #include "support/mesher_checks.h"
 
 using namespace delpsc;
@@ -107,18 +108,10 @@ TEST_CASE("box with a fin (slit)") { mesh_model(io::make_box_with_fin(4), 0.04);
 // Planar patches that are not axis-aligned: rounded coordinates make nearly flat cells and points
 // rejected off their dual edge; the rotated book at 2% looped forever re-offering a discarded
 // D3/D4 record.
-io::TriangleSoup rotated(io::TriangleSoup soup) {
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(1.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.7, Vec3::UnitY()) *
-                             Eigen::AngleAxisd(0.3, Vec3::UnitX()))
-                                .toRotationMatrix();
-  for (Vec3& v : soup.vertices) v = r * v;
-  return soup;
-}
-
 TEST_CASE("rotated models") {
-  mesh_model(rotated(io::make_box_with_fin(4)), 0.04);
-  mesh_model(rotated(io::make_book(3, 4)), 0.02);
-  mesh_model(rotated(io::make_cube(4)), 0.02);
+  mesh_model(test::rotated_model(io::make_box_with_fin(4)), 0.04);
+  mesh_model(test::rotated_model(io::make_book(3, 4)), 0.02);
+  mesh_model(test::rotated_model(io::make_cube(4)), 0.02);
 }
 
 // With the paper's global step 2(a) this hit 30,000 vertices: a D1/D2 failure near the 10° edge

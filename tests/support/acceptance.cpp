@@ -1,0 +1,72 @@
+#include "acceptance.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include <Eigen/Geometry>
+
+#include <delpsc/io/read_model.h>
+#include <delpsc/protect/protect.h>
+#include <delpsc/refine/complex_topology.h>
+#include <delpsc/refine/mesher.h>
+#include <delpsc/refine/polygon_domain.h>
+#include <delpsc/refine/protected_balls.h>
+
+#include "mesher_checks.h"
+
+namespace delpsc::test {
+
+AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& soup, double size_fraction,
+                               std::size_t max_vertices) {
+  CAPTURE(name);
+  CAPTURE(size_fraction);
+  const refine::PolygonDomain domain(soup);
+  const kernel::Box3 box = domain.bounding_box();
+  const double lambda = size_fraction * (box.hi - box.lo).norm();
+  protect::BallSet set = protect::protect(domain.complex(), lambda);
+  refine::ProtectedBalls balls(set);
+  refine::MesherOptions options;
+  options.facet_size = lambda;
+  options.max_vertices = max_vertices;
+  refine::Mesher mesher(domain, balls, options);
+  run_mesher_and_check(mesher);
+  const io::SurfaceMesh mesh = mesher.output();
+  const refine::SkeletonReport report = check_g1(mesh, domain);
+  // G2 per patch: protect::Patch counts the input patch cut open along its slits, and so do the
+  // cut_* figures of the output's patch.
+  REQUIRE(report.patches.size() == domain.complex().patches.size());
+  for (const refine::PatchSkeleton& p : report.patches) {
+    CAPTURE(p.patch);
+    CHECK(p.cut_euler == domain.complex().patches[p.patch].euler_characteristic);
+    CHECK(p.cut_boundary_loops == domain.complex().patches[p.patch].boundary_loops);
+  }
+  // G2 for the whole output, against the cleaned input triangles the mesher meshed.
+  const refine::ComplexTopology out = refine::complex_topology(mesh.triangles);
+  const refine::ComplexTopology in = refine::complex_topology(domain.complex().triangles);
+  for (const std::string& d : refine::topology_differences(out, in)) FAIL_CHECK(d);
+  CHECK(mesh.corners.size() == domain.corner_count());
+  MESSAGE(name << " at " << size_fraction * 100 << "%: vertices=" << mesh.vertices.size()
+               << " ball_refinements=" << mesher.stats().ball_refinements);
+  return {mesh.vertices.size(), mesher.stats().ball_refinements};
+}
+
+io::TriangleSoup rotated_model(io::TriangleSoup soup) {
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(1.1, Vec3::UnitZ()) * Eigen::AngleAxisd(0.7, Vec3::UnitY()) *
+                             Eigen::AngleAxisd(0.3, Vec3::UnitX()))
+                                .toRotationMatrix();
+  for (Vec3& v : soup.vertices) v = r * v;
+  return soup;
+}
+
+io::TriangleSoup cgal_demo_model(const std::string& name) {
+  // This file is tests/support/acceptance.cpp; the data sit in data/cgal-demo/ at the root.
+  const auto path = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo" / (name + ".off");
+  if (!std::filesystem::exists(path)) {
+    MESSAGE(name << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
+    return {};
+  }
+  return io::read_model(path.string()).soup;
+}
+
+}  // namespace delpsc::test

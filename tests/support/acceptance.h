@@ -1,0 +1,35 @@
+// The acceptance run of issue 6 on one model at one size: Protect (protecting balls at λ), then
+// Mesh2Complex with facet_size λ, then every guarantee the tests can check (Dey & Levine 2009,
+// §4): termination with the disk condition everywhere, G1 per patch (refine/skeleton_check.h),
+// G2 per patch (each patch's Euler characteristic and boundary loops, cut open along slits, equal
+// the input patch's) and G2 for the whole output (refine/complex_topology.h: components, Euler
+// characteristic, boundary loops, singular curves, sheets and orientability equal the input's).
+// doctest CHECKs, so a failure names the model and the size.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include <delpsc/io/triangle_soup.h>
+
+namespace delpsc::test {
+
+struct AcceptanceRun {
+  std::size_t vertices = 0;
+  std::size_t ball_refinements = 0;
+};
+
+/// Meshes `soup` at λ = size_fraction x the bounding-box diagonal (default options, at most
+/// `max_vertices` vertices) and CHECKs every guarantee above. `name` labels the messages.
+AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& soup, double size_fraction,
+                               std::size_t max_vertices = 300000);
+
+/// The soup turned by a fixed rotation (about 1.1, 0.7 and 0.3 rad around z, y and x), so that no
+/// planar patch is axis-aligned and rounded coordinates make nearly flat cells.
+io::TriangleSoup rotated_model(io::TriangleSoup soup);
+
+/// data/cgal-demo/NAME.off (fetched by scripts/get-cgal-data.sh), or an empty soup with a
+/// MESSAGE when it is absent (the test then checks nothing for it).
+io::TriangleSoup cgal_demo_model(const std::string& name);
+
+}  // namespace delpsc::test
