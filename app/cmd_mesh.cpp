@@ -1,7 +1,5 @@
 // `delpsc mesh`: the DelPSC mesh of a polygon model - Protect (step 1), Mesh2Complex (step 2),
 // ∪ Skl^i (step 3) - written by extension (issue 6).
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -9,17 +7,23 @@
 #include <stdexcept>
 
 #include <delpsc/io/mesh_writer.h>
+#include <delpsc/io/preview_svg.h>
 #include <delpsc/protect/balls.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/protect.h>
+#include <delpsc/refine/approximation_error.h>
 #include <delpsc/refine/mesh_quality.h>
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
+#include <delpsc/refine/quality_summary.h>
 #include <delpsc/refine/skeleton_check.h>
 
 #include "command.h"
+#include "mesh_report.h"
 #include "model_input.h"
+#include "output_paths.h"
+#include "progress.h"
 #include "size_option.h"
 
 namespace delpsc::app {
@@ -36,6 +40,7 @@ struct MeshCommandOptions {
   std::string facet_distance;  // empty: off
   double facet_angle = 0;
   std::string balls_path;
+  std::string preview;
   bool check = false;
 };
 
@@ -61,7 +66,16 @@ void list_failing(const refine::Mesher& mesher, const GlobalOptions& g) {
 int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (o.output.empty() || !io::mesh_format_from_path(o.output))
     throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .mesh, .vtu, .off, .obj, .ply or .stl)"};
+  check_output_path(o.output, "-o");
+  if (!o.preview.empty()) check_preview_path(o.preview);
+  if (!o.balls_path.empty()) check_output_path(o.balls_path, "--balls");
+  ProgressLine progress(progress_wanted(g.quiet));
+  PhaseTimes phases;
+  progress.phase("read");
+  const auto t_read = Clock::now();
   const io::ReadResult model = load_model(o.input, g);
+  phases.emplace_back("read", seconds_since(t_read));
+  progress.phase("features");
   const auto t0 = Clock::now();
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
   if (complex.triangles.empty())
@@ -70,6 +84,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());
 
+  phases.emplace_back("features", seconds_since(t0));
+  progress.phase("protect");
   const auto t_protect = Clock::now();
   std::optional<protect::BallSet> ball_set;
   try {
@@ -78,6 +94,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, o.input + ": " + e.what()};
   }
   const double seconds_protect = seconds_since(t_protect);
+  phases.emplace_back("protect", seconds_protect);
 
   const auto t_refine = Clock::now();
   refine::ProtectedBalls balls(*ball_set);
@@ -87,15 +104,34 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     options.facet_distance = parse_size(o.facet_distance, (box.hi - box.lo).norm(), "--facet-distance");
   options.facet_angle = o.facet_angle;
   options.max_vertices = o.max_vertices;
-  if (!g.quiet && isatty(STDERR_FILENO))
-    options.progress = [](std::size_t vertices) { std::fprintf(stderr, "\rdelpsc: refining, %zu vertices", vertices); };
+  if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
+  progress.phase("refine");
   refine::Mesher mesher(domain, balls, options);
   mesher.run();
-  if (options.progress) std::fprintf(stderr, "\r\033[K");
   const double seconds_refine = seconds_since(t_refine);
+  phases.emplace_back("refine", seconds_refine);
   const io::SurfaceMesh mesh = mesher.output();
   const double seconds = seconds_since(t0);
-  const std::size_t failing = mesher.failing_vertices().size();
+  const auto failing_vertices = mesher.failing_vertices();
+  const std::size_t failing = failing_vertices.size();
+  // G1 and the per-patch topology are checked on every run (for the report); --check only
+  // makes a failure change the exit code. Vertices are domain points computed in doubles: a
+  // tolerance of a few ulps of the diagonal.
+  progress.phase("check", mesh.vertices.size());
+  const auto t_check = Clock::now();
+  const refine::SkeletonReport check = refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm());
+  const refine::QualitySummary quality = refine::summarize_quality(mesh);
+  phases.emplace_back("check", seconds_since(t_check));
+  // Issue 6: the distances to the input, sampled at spacing λ/2 - lower bounds at most λ/2
+  // below the true ones, in practice within a few percent (refine/approximation_error.h).
+  progress.phase("approximation", mesh.vertices.size());
+  const auto t_approximation = Clock::now();
+  refine::ApproximationOptions approximation_options;
+  approximation_options.sample_spacing = lambda / 2;
+  const refine::ApproximationError approximation = refine::measure_approximation(mesh, domain, approximation_options);
+  const double seconds_approximation = seconds_since(t_approximation);
+  phases.emplace_back("approximation", seconds_approximation);
+  progress.clear();
 
   report("vertices", mesh.vertices.size());
   report("triangles", mesh.triangles.size());
@@ -110,10 +146,21 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("seconds", seconds);
   report("disk_condition", failing == 0 ? std::string("ok") : std::to_string(failing));
   report("min_angle", refine::min_triangle_angle_degrees(mesh));
+  report("hausdorff", approximation.relative(approximation.hausdorff()));
+  report("hausdorff_out_in", approximation.relative(approximation.output_to_input.distance));
+  report("hausdorff_in_out", approximation.relative(approximation.input_to_output.distance));
+  report("feature_distance", approximation.relative(approximation.feature_distance()));
+  report("hausdorff_spacing", approximation.relative(approximation.sample_spacing));
+  report("seconds_approximation", seconds_approximation);
+  report_quality(quality);
+  report_topology(compare_topology(check, domain.complex()), g);
+  {
+    std::vector<refine::DiskFailure> kinds;
+    for (const auto& [p, verdict] : failing_vertices) kinds.push_back(verdict.failure);
+    report_disk_failures(kinds);
+  }
   bool g1 = true;
   if (o.check) {
-    // Vertices are domain points computed in doubles: a tolerance of a few ulps of the diagonal.
-    const refine::SkeletonReport check = refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm());
     g1 = check.ok();
     report("g1", g1);
     const std::size_t shown = g.verbosity > 0 ? check.problems.size() : std::min<std::size_t>(check.problems.size(), 20);
@@ -132,8 +179,20 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   }
 
   // The mesh reached is written even when refinement stopped early: it shows where it failed.
+  progress.phase("output", mesh.vertices.size());
+  const auto t_output = Clock::now();
   try {
     io::write_mesh(o.output, mesh);
+    if (!o.preview.empty()) {
+      io::PreviewOptions preview;
+      char title[256];
+      std::snprintf(title, sizeof title, "%s: %zu vertices, %zu triangles, %u patches (λ = %s), min angle %.1f°",
+                    o.input.c_str(), mesh.vertices.size(), mesh.triangles.size(), domain.patch_count(), o.size.c_str(),
+                    quality.min_angle_degrees);
+      preview.title = title;
+      preview.outline_triangles = true;
+      io::write_preview_svg(o.preview, mesh, preview);
+    }
   } catch (const io::Error& e) {
     throw Failure{kBadInput, e.what()};
   }
@@ -143,6 +202,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     out.close();
     if (!out) throw Failure{kBadInput, o.balls_path + ": cannot write"};
   }
+  phases.emplace_back("output", seconds_since(t_output));
+  progress.clear();
+  report_phases(phases);
   const refine::MesherStats& s = mesher.stats();
   if (s.stopped_at_max_vertices || s.stuck || failing != 0) {
     std::fprintf(stderr, "delpsc: %s: refinement %s; the mesh reached (%zu vertices) is in %s\n", o.input.c_str(),
@@ -184,13 +246,24 @@ Runner register_mesh(CLI::App& app) {
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
   app.add_option("--balls", o->balls_path, "Write the final protecting balls as text (the format of `delpsc protect`)");
+  app.add_option("--preview", o->preview,
+                 "Draw the mesh to an SVG picture: triangles coloured by patch and shaded, feature curves and "
+                 "corners dark");
   app.footer(
       "Prints key=value lines: vertices, triangles, patches, curves, corners, lambda, balls, "
       "ball_refinements, seconds_protect, seconds_refine, seconds (total, I/O excluded), "
-      "disk_condition (ok, or the number of vertices where it fails), min_angle (degrees), g1 (--check).\n"
+      "disk_condition (ok, or the number of vertices where it fails), min_angle, max_angle (degrees), "
+      "hausdorff, hausdorff_out_in, hausdorff_in_out (the sampled distance between output and input surfaces, both ways "
+      "and each way), feature_distance (the same between each input curve and the output's edges of that curve), "
+      "hausdorff_spacing (the sample spacing, λ/2: each figure is at most that below the true one; all five relative "
+      "to the bounding-box diagonal), seconds_approximation, "
+      "radius_edge_ratio (the largest circumradius / shortest edge), patches_manifold, patches_topology_ok (each "
+      "patch's Euler characteristic and boundary loops those of the input; -v lists them), g1 (--check). "
+      "--report FILE.json writes them as JSON with phase times, the angle histogram and the per-patch topology.\n"
       "Exit code 1 when refinement stopped early (--max-vertices), the disk condition fails "
       "somewhere or G1 fails (--check): the mesh reached is written anyway and the failing vertices are listed on stderr.\n\n"
       "Examples:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh\n"
+      "  delpsc mesh samples/part.off -o part.mesh --report part.json --preview part.svg\n"
       "  delpsc mesh part.stl --size 2% --facet-distance 0.1% --facet-angle 25 -o part.vtu");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # delpsc mesh: a unit cube written by hand, meshed at sizes given as lengths and percentages; the
 # report, G1 (--check), the written mesh (OFF counts, a closed genus-0 surface, Medit labels), --balls,
-# --max-vertices (exit 1, mesh still written, failing vertices listed), and bad input (exit 2).
+# --max-vertices (exit 1, mesh still written, failing vertices listed), --report (JSON) and
+# --preview (SVG), and bad input and bad output paths (exit 2).
 source "$(dirname "$0")/lib.sh"
 
 write_cube "$TMP/cube.off"
@@ -25,6 +26,17 @@ awk -v l="$lambda" 'BEGIN { exit !(l > 0.1731 && l < 0.1733) }' || fail "10% of 
 read -r nv nt _ < <(sed -n 2p "$TMP/cube.off.out.off")
 [[ "$nv" == "$v" && "$nt" == "$t" ]] || fail "OFF file holds $nv vertices, $nt triangles; report $v, $t"
 [[ $(grep -c '^corner ' "$TMP/balls.txt") -eq 8 ]] || fail "--balls: not 8 corner lines"
+# Distances to the input (relative to the diagonal), sampled at λ/2: the cube's faces are planes and
+# its curves straight, and the mesh's vertices lie on them, so the mesh is the cube up to rounding.
+for key in hausdorff hausdorff_out_in hausdorff_in_out feature_distance hausdorff_spacing seconds_approximation; do
+  [[ -n "$(value $key)" ]] || fail "no $key in the report"
+done
+awk -v h="$(value hausdorff)" -v o="$(value hausdorff_out_in)" -v i="$(value hausdorff_in_out)" \
+    -v f="$(value feature_distance)" -v s="$(value hausdorff_spacing)" \
+    'BEGIN { exit !(h >= 0 && h < 1e-9 && o <= h && i <= h && (o == h || i == h) && f >= 0 && f < 1e-9 &&
+                    s > 0.0499 && s < 0.0501) }' \
+  || fail "cube: hausdorff=$(value hausdorff) out_in=$(value hausdorff_out_in) in_out=$(value hausdorff_in_out)" \
+          "feature_distance=$(value feature_distance) spacing=$(value hausdorff_spacing)"
 
 # The same size as a length; Medit output with labels: 8 corners, 6 patch references.
 expect 0 "" -- mesh "$TMP/cube.off" --size "$lambda" -o "$TMP/cube.mesh"
@@ -51,6 +63,74 @@ expect 0 "" -- mesh "$TMP/cube.off" --size 10% --facet-distance 0.1% --facet-ang
 [[ "$(value disk_condition)" == "ok" ]] || fail "criteria: disk_condition=$(value disk_condition)"
 expect 2 "facet-angle" -- mesh "$TMP/cube.off" --facet-angle 31 -o "$TMP/x.off"
 expect 2 "--facet-distance" -- mesh "$TMP/cube.off" --facet-distance -1 -o "$TMP/x.off"
+
+# --report: the report as JSON - every stdout key with its value, the structured parts, and per
+# patch the topology of the input (a cube: six disks); --preview: an SVG with a polygon per
+# visible triangle (the back half of the closed cube left out).
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" --report "$TMP/r.json" --preview "$TMP/r.svg"
+python3 -m json.tool "$TMP/r.json" >/dev/null || fail "--report: not valid JSON"
+python3 - "$TMP/r.json" "$TMP/out" <<'PY' || fail "--report: the JSON report does not match stdout or lacks parts"
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+lines = [l.rstrip("\n").split("=", 1) for l in open(sys.argv[2]) if "=" in l]
+problems = []
+for key, text in lines:
+    if key not in r:
+        problems.append("no " + key)
+    elif isinstance(r[key], bool):
+        if text != str(r[key]).lower(): problems.append(f"{key}: {r[key]} vs {text}")
+    elif isinstance(r[key], (int, float)):
+        if not math.isclose(r[key], float(text), rel_tol=1e-5, abs_tol=1e-12): problems.append(f"{key}: {r[key]} vs {text}")
+    elif r[key] != text:
+        problems.append(f"{key}: {r[key]} vs {text}")
+for key in ["min_angle", "max_angle", "radius_edge_ratio", "patches_manifold", "patches_topology_ok", "disk_condition"]:
+    if key not in dict(lines): problems.append("no line " + key)
+if r.get("command") != "mesh" or r.get("exit_code") != 0 or not r.get("input", "").endswith("cube.off"):
+    problems.append("command/exit_code/input")
+if [p for p in ["read", "features", "protect", "refine", "check", "output"] if p not in r.get("phases", {})]:
+    problems.append("phases: " + str(r.get("phases")))
+if any(not (s >= 0) for s in r.get("phases", {}).values()): problems.append("negative phase time")
+q = r.get("quality", {})
+if not (0 < q.get("min_angle_degrees", 0) <= 60 <= q.get("max_angle_degrees", 0) < 180 and
+        q.get("max_radius_edge_ratio", 0) >= 1 / math.sqrt(3) - 1e-12 and
+        sum(b["triangles"] for b in q.get("min_angle_histogram_degrees", [])) == r["triangles"]):
+    problems.append("quality: " + str(q))
+topology = r.get("patch_topology", [])
+if len(topology) != 6 or any(p["euler"] != 1 or p["input_euler"] != 1 or p["boundary_loops"] != 1 or
+                             not p["manifold"] or not p["matches_input"] for p in topology):
+    problems.append("patch_topology: " + str(topology))
+if sum(p["triangles"] for p in topology) != r["triangles"]: problems.append("patch triangles do not add up")
+if r.get("disk_condition_failures", {}).get("vertices") != 0: problems.append("disk_condition_failures")
+print("\n".join(problems), file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+[[ "$(value patches_topology_ok)" == "true" && "$(value patches_manifold)" == "true" ]] \
+  || fail "patches_topology_ok=$(value patches_topology_ok) patches_manifold=$(value patches_manifold)"
+head -c 200 "$TMP/r.svg" | grep -q "<svg" || fail "--preview: not an SVG"
+polygons=$(grep -c "<polygon" "$TMP/r.svg")
+t=$(value triangles)
+[[ "$polygons" -gt $((t / 3)) && "$polygons" -lt $((2 * t / 3)) ]] || fail "--preview: $polygons polygons for $t triangles"
+[[ $(grep -c "<line" "$TMP/r.svg") -gt 12 && $(grep -c "<circle" "$TMP/r.svg") -eq 8 ]] || fail "--preview: feature edges or corners missing"
+# -v lists each patch's topology; a failed run still writes its report, with the error.
+expect 0 "patch 5:" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" -v
+expect 2 "" -- mesh "$TMP/none.off" -o "$TMP/x.off" --report "$TMP/fail.json"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); sys.exit(not (r["exit_code"] == 2 and "none.off" in r["error"]))' \
+  "$TMP/fail.json" || fail "--report of a failed run: $(cat "$TMP/fail.json")"
+# Progress: silent when stderr is a file (as in every run above), shown on a terminal (a pseudo-
+# terminal from script(1), stdin from /dev/null so that it runs without one), silent with -q.
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off"
+! grep -q $'\r' "$TMP/err" || fail "progress written to a non-terminal stderr"
+script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off'" /dev/null </dev/null >"$TMP/tty" 2>&1
+grep -q "delpsc: refine .*vertices" "$TMP/tty" || fail "no progress on a terminal: $(head -c 300 "$TMP/tty")"
+script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off' -q" /dev/null </dev/null >"$TMP/tty" 2>&1
+grep -q "vertices=" "$TMP/tty" && ! grep -q "delpsc: refine" "$TMP/tty" || fail "-q on a terminal: $(head -c 300 "$TMP/tty")"
+# Bad paths for the report and the preview: exit 2 before any meshing, nothing written.
+expect 2 "--report $TMP/no/dir/r.json: no such directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP/no/dir/r.json"
+expect 2 "--report $TMP: is a directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP"
+expect 2 "--preview $TMP/no/p.svg: no such directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --preview "$TMP/no/p.svg"
+expect 2 "name it *.svg" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --preview "$TMP/p.png"
+expect 2 "-o $TMP/no/x.off: no such directory" -- mesh "$TMP/cube.off" -o "$TMP/no/x.off"
+[[ ! -e "$TMP/x.off" ]] || fail "a mesh was written despite a bad output path"
 
 # Bad input.
 expect 2 "cannot open" -- mesh "$TMP/none.off" -o "$TMP/x.off"
