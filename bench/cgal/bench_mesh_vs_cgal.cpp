@@ -205,7 +205,7 @@ std::string time_cell(const Series& s, double cap) {
   char buf[64];
   if (s.skipped) return "skipped";
   if (s.runs.empty()) {
-    if (s.first_end == RunEnd::kTimedOut) std::snprintf(buf, sizeof buf, "> %.0f s (cap)", cap);
+    if (s.first_end == RunEnd::kTimedOut) std::snprintf(buf, sizeof buf, "> %g s (cap)", cap);
     else std::snprintf(buf, sizeof buf, "crashed");
     return buf;
   }
