@@ -28,7 +28,7 @@
 // when the walk finds no triangle within the largest distance so far (about one sample in 50).
 // Curves use one small tree each over their segments, a segment stored as the degenerate
 // triangle (u, v, v), whose closest point the tree computes on its edges. Measured on fandisk at
-// λ = 1% with h = λ/2: 0.06 s, 14% of the refinement's time (BENCHMARKS.md).
+// λ = 1% with h = λ/2: 0.06 s of CPU, 15% of the refinement's (BENCHMARKS.md).
 #pragma once
 
 #include <cstddef>
