@@ -78,6 +78,9 @@ TEST_CASE("capped cylinder") { mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 
 TEST_CASE("coarse sizes") {
   mesh_model(io::make_cube(4), 0.3);
   mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.3);
+  // With the paper's global step 2(a), until the restricted facets hung off cell facets
+  // (e65c8cc), this ended stuck after 88 RefineBalls and 4,969 vertices; now 23 vertices.
+  CHECK(mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.3, false).vertices < 100);
 }
 
 TEST_CASE("the paper's global choice in step 2(a)") {
