@@ -154,6 +154,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("seconds_approximation", seconds_approximation);
   report_quality(quality);
   report_topology(compare_topology(check, domain.complex()), g);
+  report_complex_topology(refine::complex_topology(mesh.triangles), refine::complex_topology(domain.complex().triangles),
+                          g);
   {
     std::vector<refine::DiskFailure> kinds;
     for (const auto& [p, verdict] : failing_vertices) kinds.push_back(verdict.failure);
@@ -258,8 +260,10 @@ Runner register_mesh(CLI::App& app) {
       "hausdorff_spacing (the sample spacing, λ/2: each figure is at most that below the true one; all five relative "
       "to the bounding-box diagonal), seconds_approximation, "
       "radius_edge_ratio (the largest circumradius / shortest edge), patches_manifold, patches_topology_ok (each "
-      "patch's Euler characteristic and boundary loops those of the input; -v lists them), g1 (--check). "
-      "--report FILE.json writes them as JSON with phase times, the angle histogram and the per-patch topology.\n"
+      "patch's Euler characteristic and boundary loops those of the input; -v lists them), topology_ok (the whole "
+      "output's components, Euler characteristic, boundary loops, non-manifold curves and sheets those of the input), "
+      "g1 (--check). "
+      "--report FILE.json writes them as JSON with phase times, the angle histogram and the per-patch and whole topology.\n"
       "Exit code 1 when refinement stopped early (--max-vertices), the disk condition fails "
       "somewhere or G1 fails (--check): the mesh reached is written anyway and the failing vertices are listed on stderr.\n\n"
       "Examples:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh\n"

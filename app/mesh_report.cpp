@@ -88,4 +88,39 @@ void report_topology(const std::vector<PatchTopology>& patches, const GlobalOpti
   final_report().add_json("patch_topology", json.end_array().str());
 }
 
+namespace {
+
+void write_figures(JsonWriter& json, const refine::ComplexTopology& t) {
+  json.begin_object()
+      .key("vertices").value(t.vertices)
+      .key("edges").value(t.edges)
+      .key("triangles").value(t.triangles)
+      .key("components").value(t.components)
+      .key("euler").value(t.euler)
+      .key("boundary_loops").value(t.boundary_loops)
+      .key("singular_curves").value(t.singular_curves)
+      .key("sheets").value(t.sheets)
+      .key("non_orientable_sheets").value(t.non_orientable_sheets)
+      .end_object();
+}
+
+}  // namespace
+
+void report_complex_topology(const refine::ComplexTopology& output, const refine::ComplexTopology& input,
+                             const GlobalOptions& g) {
+  const std::vector<std::string> differences = refine::topology_differences(output, input);
+  report("topology_ok", differences.empty());
+  JsonWriter json;
+  json.begin_object().key("output");
+  write_figures(json, output);
+  json.key("input");
+  write_figures(json, input);
+  json.key("differences").begin_array();
+  for (const std::string& d : differences) json.value(d);
+  json.end_array().key("matches_input").value(differences.empty());
+  final_report().add_json("topology", json.end_object().str());
+  if (!g.quiet)
+    for (const std::string& d : differences) std::fprintf(stderr, "delpsc: topology: %s\n", d.c_str());
+}
+
 }  // namespace delpsc::app

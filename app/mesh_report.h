@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <delpsc/protect/complex.h>
+#include <delpsc/refine/complex_topology.h>
 #include <delpsc/refine/disk_condition.h>
 #include <delpsc/refine/quality_summary.h>
 #include <delpsc/refine/skeleton_check.h>
@@ -50,5 +51,13 @@ std::vector<PatchTopology> compare_topology(const refine::SkeletonReport& output
 /// matches the input); JSON "patch_topology", one object per patch; with -v one line per patch
 /// on stderr.
 void report_topology(const std::vector<PatchTopology>& patches, const GlobalOptions& g);
+
+/// G2 for the whole output (Theorem 4.3: |∪ Skl^i| homeomorphic to |D| at a fine enough λ),
+/// which the per-patch figures cannot see (a fin detached from its box, sheets of a book glued
+/// to the wrong page): line topology_ok (true when every figure of refine::ComplexTopology
+/// agrees; a necessary condition only), JSON "topology" with both sides' figures and the
+/// differences, which are also printed on stderr unless -q.
+void report_complex_topology(const refine::ComplexTopology& output, const refine::ComplexTopology& input,
+                             const GlobalOptions& g);
 
 }  // namespace delpsc::app

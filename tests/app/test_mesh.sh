@@ -83,7 +83,8 @@ for key, text in lines:
         if not math.isclose(r[key], float(text), rel_tol=1e-5, abs_tol=1e-12): problems.append(f"{key}: {r[key]} vs {text}")
     elif r[key] != text:
         problems.append(f"{key}: {r[key]} vs {text}")
-for key in ["min_angle", "max_angle", "radius_edge_ratio", "patches_manifold", "patches_topology_ok", "disk_condition"]:
+for key in ["min_angle", "max_angle", "radius_edge_ratio", "patches_manifold", "patches_topology_ok", "topology_ok",
+            "disk_condition"]:
     if key not in dict(lines): problems.append("no line " + key)
 if r.get("command") != "mesh" or r.get("exit_code") != 0 or not r.get("input", "").endswith("cube.off"):
     problems.append("command/exit_code/input")
@@ -101,11 +102,18 @@ if len(topology) != 6 or any(p["euler"] != 1 or p["input_euler"] != 1 or p["boun
     problems.append("patch_topology: " + str(topology))
 if sum(p["triangles"] for p in topology) != r["triangles"]: problems.append("patch triangles do not add up")
 if r.get("disk_condition_failures", {}).get("vertices") != 0: problems.append("disk_condition_failures")
+# The whole cube: one closed sphere-like sheet, whatever the triangulation.
+whole = r.get("topology", {})
+cube = {"components": 1, "euler": 2, "boundary_loops": 0, "singular_curves": 0, "sheets": 1, "non_orientable_sheets": 0}
+if (not whole.get("matches_input") or whole.get("differences") != [] or
+        any(whole.get(side, {}).get(k) != v for side in ["output", "input"] for k, v in cube.items()) or
+        whole["output"].get("triangles") != r["triangles"]):
+    problems.append("topology: " + str(whole))
 print("\n".join(problems), file=sys.stderr)
 sys.exit(1 if problems else 0)
 PY
-[[ "$(value patches_topology_ok)" == "true" && "$(value patches_manifold)" == "true" ]] \
-  || fail "patches_topology_ok=$(value patches_topology_ok) patches_manifold=$(value patches_manifold)"
+[[ "$(value patches_topology_ok)" == "true" && "$(value patches_manifold)" == "true" && "$(value topology_ok)" == "true" ]] \
+  || fail "patches_topology_ok=$(value patches_topology_ok) patches_manifold=$(value patches_manifold) topology_ok=$(value topology_ok)"
 head -c 200 "$TMP/r.svg" | grep -q "<svg" || fail "--preview: not an SVG"
 polygons=$(grep -c "<polygon" "$TMP/r.svg")
 t=$(value triangles)
