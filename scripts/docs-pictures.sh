@@ -11,4 +11,4 @@ trap 'rm -rf "$tmp"' EXIT
 "$delpsc" features samples/part.off --preview docs/sample-features.svg >/dev/null
 "$delpsc" mesh samples/part.off -o "$tmp/part.mesh" --size 2% --check --preview docs/sample-mesh.svg -q >"$tmp/report"
 echo "wrote docs/sample-features.svg, docs/sample-mesh.svg; the README's report excerpt:" >&2
-grep -E '^(vertices|triangles|patches|curves|corners|balls|seconds|disk_condition|min_angle|radius_edge_ratio|hausdorff|patches_manifold|patches_topology_ok|g1)=' "$tmp/report"
+grep -E '^(vertices|triangles|patches|curves|corners|balls|seconds|disk_condition|min_angle|radius_edge_ratio|hausdorff|patches_manifold|patches_topology_ok|topology_ok|g1)=' "$tmp/report"
