@@ -23,3 +23,13 @@ TEST_CASE("part") { accept_cgal_demo("part"); }
 TEST_CASE("anchor") { accept_cgal_demo("anchor"); }
 TEST_CASE("joint") { accept_cgal_demo("joint"); }
 TEST_CASE("elephant") { accept_cgal_demo("elephant"); }
+
+// With CGAL's criteria as the benchmark gives them (facet_distance = λ/10, facet_angle = 25°):
+// at 043e8ef anchor at 0.5% ran away here - points 1e-10 apart failing D1/D2 for ever, 74,000
+// insertions and more than a minute - until e65c8cc and 13d70be; it now ends with G1 like the
+// size-only run.
+TEST_CASE("anchor with facet_distance and facet_angle") {
+  const io::TriangleSoup soup = test::cgal_demo_model("anchor");
+  if (soup.triangles.empty()) return;
+  test::check_acceptance("anchor", soup, 0.005, 300000, {.facet_distance_of_lambda = 0.1, .facet_angle_degrees = 25});
+}

@@ -18,9 +18,11 @@
 namespace delpsc::test {
 
 AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& soup, double size_fraction,
-                               std::size_t max_vertices) {
+                               std::size_t max_vertices, ExtraCriteria criteria) {
   CAPTURE(name);
   CAPTURE(size_fraction);
+  CAPTURE(criteria.facet_distance_of_lambda);
+  CAPTURE(criteria.facet_angle_degrees);
   const refine::PolygonDomain domain(soup);
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = size_fraction * (box.hi - box.lo).norm();
@@ -29,6 +31,8 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   refine::MesherOptions options;
   options.facet_size = lambda;
   options.max_vertices = max_vertices;
+  options.facet_distance = criteria.facet_distance_of_lambda * lambda;
+  options.facet_angle = criteria.facet_angle_degrees;
   refine::Mesher mesher(domain, balls, options);
   run_mesher_and_check(mesher);
   const io::SurfaceMesh mesh = mesher.output();

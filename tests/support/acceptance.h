@@ -19,10 +19,18 @@ struct AcceptanceRun {
   std::size_t ball_refinements = 0;
 };
 
-/// Meshes `soup` at λ = size_fraction x the bounding-box diagonal (default options, at most
-/// `max_vertices` vertices) and CHECKs every guarantee above. `name` labels the messages.
+/// CGAL Mesh_3's two other facet criteria on top of facet_size = λ (refine/facet_criteria.h);
+/// zero turns one off.
+struct ExtraCriteria {
+  double facet_distance_of_lambda = 0;  ///< facet_distance as a fraction of λ
+  double facet_angle_degrees = 0;       ///< facet_angle
+};
+
+/// Meshes `soup` at λ = size_fraction x the bounding-box diagonal (default options plus
+/// `criteria`, at most `max_vertices` vertices) and CHECKs every guarantee above. `name` labels
+/// the messages.
 AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& soup, double size_fraction,
-                               std::size_t max_vertices = 300000);
+                               std::size_t max_vertices = 300000, ExtraCriteria criteria = {});
 
 /// The soup turned by a fixed rotation (about 1.1, 0.7 and 0.3 rad around z, y and x), so that no
 /// planar patch is axis-aligned and rounded coordinates make nearly flat cells.
