@@ -64,7 +64,8 @@ class RestrictedFacets {
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
   /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
-  void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched);
+  /// `insertion`: the changes come from inserting one point (cells only shrink, see update()).
+  void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, bool insertion);
 
   std::size_t size() const { return live_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
