@@ -311,8 +311,6 @@ void Mesher::run() {
       stats_.message = "stopped at --max-vertices " + std::to_string(options_.max_vertices);
       return;
     }
-    const std::uint32_t top = facets_.largest();
-    const double d1 = top == kNoFacet ? -1 : facets_[top].size;
     if (!failing_d12_.empty()) {
       // Re-verify before acting: an entry goes stale if its vertex's verdict changed without
       // its (triangle, patch) pairs changing (ball adjacency after a RefineBall elsewhere).
@@ -320,6 +318,8 @@ void Mesher::run() {
       recheck(p);
       if (failing_d12_.count(p) == 0) continue;
       if (options_.local_disk_refinement && refine_around(p)) continue;
+      const std::uint32_t top = facets_.largest();
+      const double d1 = top == kNoFacet ? -1 : facets_[top].size;
       const BallKey big = balls_->largest();
       const double d2 = big == kNoBallKey ? -1 : balls_->ball(big).radius;
       if (top != kNoFacet && d1 >= d2) {

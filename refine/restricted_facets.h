@@ -12,8 +12,8 @@
 // still holds its references when update() runs, even if a created cell reuses the slot, because
 // the destroyed cells are processed first.
 //
-// The largest size is served by a max-heap with lazy deletion: an entry is valid while its
-// record's stamp is unchanged. Per vertex, the list of records incident to it (its umbrellas,
+// The largest size is served by a max-heap with lazy deletion, made on first use: an entry is
+// valid while its record's stamp is unchanged. Per vertex, the list of records incident to it (its umbrellas,
 // all patches mixed), for the disk condition.
 //
 // Units: size is a length, sqrt(max(0, power distance)), comparable with ball radii and λ.
@@ -128,6 +128,7 @@ class RestrictedFacets {
   std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;
+  bool heap_active_ = false;  // heap_ is made on the first largest() call
   Badness badness_;
   std::priority_queue<HeapEntry> bad_heap_;  // badness, slot, stamp
 };
