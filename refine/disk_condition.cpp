@@ -85,15 +85,10 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   for (const auto& [sigma, interior] : patches) {
     link.clear();
     link_facet.clear();
-    for (const std::uint32_t s : facets.incident(p)) {
-      const RestrictedFacet& r = facets[s];
-      if (r.patch != sigma) continue;
-      std::array<PointId, 2> e{};
-      int n = 0;
-      for (const PointId v : r.vertices)
-        if (v != p) e[n++] = v;
-      link.push_back(e);
-      link_facet.push_back(s);
+    for (const Incidence& x : facets.incident(p)) {
+      if (x.patch != sigma) continue;
+      link.push_back(x.link);
+      link_facet.push_back(x.slot);
     }
     if (link.empty()) return {DiskFailure::d1, sigma, kNoFacet};
     // The link graph: its vertices sorted, degrees, and connectivity by union-find, so that a
@@ -150,10 +145,9 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   // failure of its vertices that lie in σ, if any; reporting it at p too covers a triangle none
   // of whose vertices lie in σ (seen on a rotated box with a fin at 4%).
   if (late.failure == DiskFailure::none)
-    for (const std::uint32_t s : facets.incident(p)) {
-      const std::uint32_t sigma = facets[s].patch;
-      if (std::none_of(patches.begin(), patches.end(), [&](const auto& e) { return e.first == sigma; }))
-        return {DiskFailure::d4, sigma, s};
+    for (const Incidence& x : facets.incident(p)) {
+      if (std::none_of(patches.begin(), patches.end(), [&](const auto& e) { return e.first == x.patch; }))
+        return {DiskFailure::d4, x.patch, x.slot};
     }
   return late;
 }

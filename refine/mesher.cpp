@@ -278,7 +278,8 @@ bool Mesher::refine_around(PointId p) {
     }
   };
   consider_ball(p);
-  for (const std::uint32_t slot : facets_.incident(p)) {
+  for (const Incidence& x : facets_.incident(p)) {
+    const std::uint32_t slot = x.slot;
     const RestrictedFacet& r = facets_[slot];
     for (const PointId v : r.vertices) consider_ball(v);
     if (r.discarded || r.size <= d1) continue;

@@ -44,7 +44,7 @@ void RestrictedFacets::forget_chain(std::uint32_t first) {
     gone_.push_back({r.vertices[0], r.vertices[1], r.vertices[2], r.patch});
     for (const PointId v : r.vertices) {
       auto& list = by_vertex_[v];
-      const auto pos = std::find(list.begin(), list.end(), s);
+      const auto pos = std::find_if(list.begin(), list.end(), [s](const Incidence& x) { return x.slot == s; });
       *pos = list.back();
       list.pop_back();
     }
@@ -120,9 +120,10 @@ void RestrictedFacets::examine(Facet f) {
     else
       records_[last].next = s;
     last = s;
-    for (const PointId u : v) {
+    for (int k = 0; k < 3; ++k) {
+      const PointId u = v[k];
       if (by_vertex_.size() <= u) by_vertex_.resize(std::max<std::size_t>(u + 1, 2 * by_vertex_.size()));
-      by_vertex_[u].push_back(s);
+      by_vertex_[u].push_back({s, patch, {v[k == 0 ? 1 : 0], v[k == 2 ? 1 : 2]}});
     }
     made_.push_back({v[0], v[1], v[2], patch});
     if (heap_active_) heap_.emplace(r.power, s, r.stamp);

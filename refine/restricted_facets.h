@@ -53,6 +53,15 @@ struct RestrictedFacet {
   bool discarded = false;             ///< skipped by largest() (see discard)
 };
 
+/// A live record as seen from one of its vertices v: its slot, its patch and the edge of t
+/// opposite v, which is all the disk condition reads (disk_condition.h). Kept in v's list so a
+/// check walks one contiguous array instead of touching each ~100-byte record.
+struct Incidence {
+  std::uint32_t slot = kNoFacet;
+  std::uint32_t patch = 0;
+  std::array<PointId, 2> link{};  ///< t's other two vertices, increasing
+};
+
 class RestrictedFacets {
  public:
   /// Both must outlive this object; the triangulation must have dimension 3 before rebuild().
@@ -69,8 +78,8 @@ class RestrictedFacets {
 
   std::size_t size() const { return live_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
-  /// Slots of the live records incident to vertex v, all patches.
-  std::span<const std::uint32_t> incident(PointId v) const {
+  /// The live records incident to vertex v, all patches.
+  std::span<const Incidence> incident(PointId v) const {
     if (v >= by_vertex_.size()) return {};
     return by_vertex_[v];
   }
@@ -117,7 +126,7 @@ class RestrictedFacets {
   std::vector<RestrictedFacet> records_;
   std::vector<std::uint32_t> free_;
   std::size_t live_ = 0;
-  std::vector<std::vector<std::uint32_t>> by_vertex_;
+  std::vector<std::vector<Incidence>> by_vertex_;
   // Per cell slot, per facet index: its records. Indexing by cell facet instead of hashing the
   // vertex triple: the facets to forget are exactly those of the destroyed cells, whose slots
   // still hold the old references when update() runs, so no lookup by vertices is ever needed.
