@@ -21,6 +21,10 @@ namespace delpsc::refine {
 class PolygonDomain final : public Domain {
  public:
   /// Takes the complex (moved in) and builds the tree over its triangles.
+  /// Precondition for meshing: no two triangles cross or overlap other than along a shared edge
+  /// or vertex (protect::find_self_intersections finds those that do; `delpsc` refuses them).
+  /// Along such a crossing the disk condition cannot hold, and a Mesher stops only at
+  /// MesherOptions::max_vertices.
   explicit PolygonDomain(protect::Complex complex);
   /// Convenience: builds the complex of `soup` first.
   explicit PolygonDomain(const io::TriangleSoup& soup, const protect::ComplexOptions& options = {});

@@ -1,0 +1,91 @@
+#include "self_intersections.h"
+
+#include <algorithm>
+
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/constructions.h>
+#include <delpsc/kernel/predicates.h>
+
+namespace delpsc::protect {
+
+namespace {
+
+bool segment_meets(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t) {
+  return static_cast<bool>(kernel::intersect_segment_triangle(p, q, t[0], t[1], t[2]));
+}
+
+/// Does edge k of x (opposite its vertex k) meet the closed triangle y?
+bool opposite_edge_meets(const std::array<Vec3, 3>& x, int k, const std::array<Vec3, 3>& y) {
+  return segment_meets(x[(k + 1) % 3], x[(k + 2) % 3], y);
+}
+
+}  // namespace
+
+bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::array<std::uint32_t, 3>& ia,
+                                    const std::array<Vec3, 3>& b, const std::array<std::uint32_t, 3>& ib) {
+  std::array<int, 3> in_b{-1, -1, -1};  // position in b of each vertex of a, -1 if not shared
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (ia[i] == ib[j]) {
+        in_b[i] = j;
+        ++shared;
+      }
+  switch (shared) {
+    case 0:
+      // Two closed triangles meet iff an edge of one meets the other: a non-empty intersection
+      // is convex, and a point of it extreme along any line lies on an edge of one of them.
+      for (int k = 0; k < 3; ++k)
+        if (opposite_edge_meets(a, k, b) || opposite_edge_meets(b, k, a)) return true;
+      return false;
+    case 1: {
+      // Sharing vertex v: if they also share p != v, follow the ray from v through p until it
+      // leaves one of them, say a, at x. x is in b, and it lies on a's edge opposite v (when the
+      // ray runs along an edge of a through v, x is that edge's far vertex, also on the opposite
+      // edge). The converse holds since v is on neither opposite edge.
+      const int i = static_cast<int>(std::find_if(in_b.begin(), in_b.end(), [](int j) { return j >= 0; }) - in_b.begin());
+      return opposite_edge_meets(a, i, b) || opposite_edge_meets(b, in_b[i], a);
+    }
+    case 2: {
+      // Sharing edge uv: in different planes they meet exactly in uv; in one plane they overlap
+      // iff their third vertices are on the same side of uv (a fold).
+      const int i = static_cast<int>(std::find(in_b.begin(), in_b.end(), -1) - in_b.begin());
+      int j = 0;
+      while (ib[j] == ia[(i + 1) % 3] || ib[j] == ia[(i + 2) % 3]) ++j;
+      const Vec3& u = a[(i + 1) % 3];
+      const Vec3& v = a[(i + 2) % 3];
+      if (kernel::orient3d(u, v, a[i], b[j]) != 0) return false;
+      return kernel::coplanar_orientation(u.data(), v.data(), a[i].data(), b[j].data()) > 0;
+    }
+    default:
+      return true;  // the same triangle twice
+  }
+}
+
+std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex, std::size_t max_pairs) {
+  std::vector<std::array<std::uint32_t, 2>> pairs;
+  if (complex.triangles.empty() || max_pairs == 0) return pairs;
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  const auto corners = [&](std::uint32_t t) {
+    const auto& tri = complex.triangles[t];
+    return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
+  };
+  std::vector<std::uint32_t> candidates;
+  for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
+    const std::array<Vec3, 3> a = corners(t);
+    kernel::Box3 box;
+    for (const Vec3& p : a) box.extend(p);
+    candidates.clear();
+    tree.triangles_in_box(box, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    for (const std::uint32_t c : candidates) {
+      if (c <= t) continue;  // each pair once
+      if (!triangles_intersect_improperly(a, complex.triangles[t], corners(c), complex.triangles[c])) continue;
+      pairs.push_back({t, c});
+      if (pairs.size() == max_pairs) return pairs;
+    }
+  }
+  return pairs;
+}
+
+}  // namespace delpsc::protect

@@ -1,0 +1,36 @@
+// Self-intersections of the input: pairs of triangles that meet other than in a vertex or an edge
+// they share. DelPSC meshes a piecewise smooth complex (Dey & Levine 2009, §1.1), whose patches
+// meet only along its curves and corners; two sheets crossing each other along a line that is no
+// curve of the complex are not one, the disk condition can never hold along that line (§3: the
+// restricted triangles around a point of it form no disk), and refinement would go on until
+// memory runs out. So the commands reject such input up front, naming the triangles.
+//
+// Every decision is exact (orient3d, coplanar orientations and the exact segment/triangle
+// classification of kernel/constructions.h): touching counts as meeting, however slightly.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <delpsc/kernel/point.h>
+#include <delpsc/protect/complex.h>
+
+namespace delpsc::protect {
+
+/// True iff the closed non-degenerate triangles a and b meet in a point that is not a vertex or
+/// an edge they share - a common vertex is one with the same index in `ia` and `ib` (vertices are
+/// welded, so equal positions have equal indices). Triangles with all three vertices in common
+/// (a duplicate) intersect. Preconditions: neither triangle is degenerate (collinear). Exact.
+bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::array<std::uint32_t, 3>& ia,
+                                    const std::array<Vec3, 3>& b, const std::array<std::uint32_t, 3>& ib);
+
+/// Pairs of triangles of `complex` (indices into complex.triangles, first < second, sorted) that
+/// intersect improperly, at most `max_pairs` of them (the search stops there). An AABB tree finds
+/// the pairs whose boxes overlap; each is decided exactly. O(T log T + K) time for T triangles
+/// and K box-overlapping pairs (about 15 per triangle on a clean mesh); O(T) memory.
+std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex,
+                                                                  std::size_t max_pairs = 100);
+
+}  // namespace delpsc::protect

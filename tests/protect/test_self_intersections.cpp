@@ -1,0 +1,133 @@
+// protect/self_intersections.h: which pairs of input triangles meet other than in a shared vertex
+// or edge. Hand-made pairs for every case of the exact test (no, one, two, three shared
+// vertices; crossing, touching, coplanar overlap, folds), symmetry under swapping and rotating
+// the triangles, and whole models: the generated shapes (including the non-manifold book and
+// fin, where sheets meet along a shared edge and must not be flagged), the sample part, the
+// libcgal-demo models when present, and a model with one crossing pushed into it.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include <delpsc/io/read_model.h>
+#include <delpsc/io/sample_part.h>
+#include <delpsc/io/shapes.h>
+#include <delpsc/protect/self_intersections.h>
+
+using namespace delpsc;
+using protect::triangles_intersect_improperly;
+
+namespace {
+
+using Tri = std::array<Vec3, 3>;
+using Ids = std::array<std::uint32_t, 3>;
+
+// The answer for (a, b), checked to be the same for (b, a) and for every rotation of the
+// corners of either triangle (the test must not depend on the order it is given things in).
+bool improper(const Tri& a, const Ids& ia, const Tri& b, const Ids& ib) {
+  const bool answer = triangles_intersect_improperly(a, ia, b, ib);
+  for (int r = 0; r < 3; ++r) {
+    const Tri ar{a[r], a[(r + 1) % 3], a[(r + 2) % 3]};
+    const Ids iar{ia[r], ia[(r + 1) % 3], ia[(r + 2) % 3]};
+    for (int s = 0; s < 3; ++s) {
+      const Tri bs{b[s], b[(s + 1) % 3], b[(s + 2) % 3]};
+      const Ids ibs{ib[s], ib[(s + 1) % 3], ib[(s + 2) % 3]};
+      CHECK(triangles_intersect_improperly(ar, iar, bs, ibs) == answer);
+      CHECK(triangles_intersect_improperly(bs, ibs, ar, iar) == answer);
+    }
+  }
+  return answer;
+}
+
+const Vec3 o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+
+std::size_t self_intersections(const io::TriangleSoup& soup) {
+  return protect::find_self_intersections(protect::build_complex(soup)).size();
+}
+
+}  // namespace
+
+TEST_CASE("no shared vertex") {
+  const Tri a{o, x, y};
+  // Crossing: b pierces a's interior.
+  CHECK(improper(a, {0, 1, 2}, {Vec3(0.2, 0.2, -1), Vec3(0.3, 0.3, 1), Vec3(0.9, 0.1, 1)}, {3, 4, 5}));
+  // Apart, above a.
+  CHECK_FALSE(improper(a, {0, 1, 2}, {Vec3(0, 0, 0.1), Vec3(1, 0, 0.1), Vec3(0, 1, 0.2)}, {3, 4, 5}));
+  // Touching: a vertex of b on a's interior, b otherwise above a.
+  CHECK(improper(a, {0, 1, 2}, {Vec3(0.25, 0.25, 0), Vec3(1, 1, 1), Vec3(0, 1, 1)}, {3, 4, 5}));
+  // Touching: a vertex of b on a's edge (a T-junction that was not welded).
+  CHECK(improper(a, {0, 1, 2}, {Vec3(0.5, 0, 0), Vec3(0.5, -1, 0), Vec3(1, -1, 0)}, {3, 4, 5}));
+  // Just apart from that edge (the exact test sees 2^-40).
+  CHECK_FALSE(improper(a, {0, 1, 2}, {Vec3(0.5, -0x1p-40, 0), Vec3(0.5, -1, 0), Vec3(1, -1, 0)}, {3, 4, 5}));
+  // Coplanar, b inside a: no edges cross; b's edges lie in a.
+  CHECK(improper(a, {0, 1, 2}, {Vec3(0.1, 0.1, 0), Vec3(0.3, 0.1, 0), Vec3(0.1, 0.3, 0)}, {3, 4, 5}));
+  // Coplanar and disjoint.
+  CHECK_FALSE(improper(a, {0, 1, 2}, {Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2, 0)}, {3, 4, 5}));
+}
+
+TEST_CASE("one shared vertex") {
+  const Tri a{o, x, y};
+  // A fan neighbour across nothing: b hangs below a, meeting it only at o.
+  CHECK_FALSE(improper(a, {0, 1, 2}, {o, Vec3(-1, 0, -1), Vec3(0, -1, -1)}, {0, 3, 4}));
+  // b stands on o and cuts through a: its opposite edge pierces a's interior.
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(0.3, 0.3, 1), Vec3(0.3, 0.3, -1)}, {0, 3, 4}));
+  // b leans on a along a line from o: the segment from o to (0.2, 0.2, 0) lies in both, and b's
+  // opposite edge crosses a's plane outside a - only a's opposite edge meets b.
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(0.4, 0.4, 1), Vec3(0.4, 0.4, -1)}, {0, 3, 4}));
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(5, 5, 1), Vec3(5, 5, -1)}, {0, 3, 4}));
+  // Coplanar, sectors at o overlapping.
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(1, 0.5, 0), Vec3(2, 3, 0)}, {0, 3, 4}));
+  // Coplanar, sectors at o apart (b in the opposite quadrant).
+  CHECK_FALSE(improper(a, {0, 1, 2}, {o, Vec3(-1, 0, 0), Vec3(0, -1, 0)}, {0, 3, 4}));
+  // Coplanar, b's edge along a's edge o-x but longer: they share the segment o-x.
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(2, 0, 0), Vec3(2, -1, 0)}, {0, 3, 4}));
+  // Not coplanar, an edge of b along a's edge o-x, shorter: they share a segment from o.
+  CHECK(improper(a, {0, 1, 2}, {o, Vec3(0.5, 0, 0), Vec3(0.5, 0, 1)}, {0, 3, 4}));
+}
+
+TEST_CASE("a shared edge") {
+  const Tri a{o, x, y};
+  CHECK_FALSE(improper(a, {0, 1, 2}, {x, o, Vec3(0, -1, 0)}, {1, 0, 3}));  // flat, either side
+  CHECK_FALSE(improper(a, {0, 1, 2}, {x, o, z}, {1, 0, 3}));               // a dihedral angle
+  CHECK_FALSE(improper(a, {0, 1, 2}, {x, o, Vec3(0.5, 1, 1e-30)}, {1, 0, 3}));  // nearly folded
+  CHECK(improper(a, {0, 1, 2}, {x, o, Vec3(0.5, 1, 0)}, {1, 0, 3}));        // folded onto a
+  CHECK(improper(a, {0, 1, 2}, {o, x, y}, {0, 1, 2}));                       // the same triangle
+}
+
+TEST_CASE("clean models have none, the non-manifold ones included") {
+  CHECK(self_intersections(io::make_cube(4)) == 0);
+  CHECK(self_intersections(io::make_torus()) == 0);
+  CHECK(self_intersections(io::make_book(4)) == 0);
+  CHECK(self_intersections(io::make_box_with_fin()) == 0);
+  CHECK(self_intersections(io::make_wedge(1)) == 0);
+  CHECK(self_intersections(io::make_crossed_ridges(0.001)) == 0);
+  CHECK(self_intersections(io::make_sample_part()) == 0);
+  const std::filesystem::path data = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
+  for (const char* name : {"fandisk", "part", "anchor", "joint", "elephant"}) {
+    const std::filesystem::path file = data / (std::string(name) + ".off");
+    if (!std::filesystem::exists(file)) {
+      MESSAGE(file << " absent (scripts/get-cgal-data.sh): not checked");
+      continue;
+    }
+    CAPTURE(name);
+    CHECK(self_intersections(io::read_model(file.string()).soup) == 0);
+  }
+}
+
+TEST_CASE("a cube with a sheet through it: every crossing pair found, and the cap respected") {
+  io::TriangleSoup soup = io::make_cube(4);  // the unit cube, 4 x 4 squares a face
+  // A square sheet at height 0.3 sticking out of the cube on every side: it crosses the four
+  // side faces, each along a line through 4 squares (8 triangles), and the 2 sheet triangles
+  // meet each of them.
+  const auto base = static_cast<std::uint32_t>(soup.vertices.size());
+  for (const Vec3& p : {Vec3(-1, -1, 0.3), Vec3(2, -1, 0.3), Vec3(2, 2, 0.3), Vec3(-1, 2, 0.3)}) soup.vertices.push_back(p);
+  soup.triangles.push_back({base, base + 1, base + 2});
+  soup.triangles.push_back({base, base + 2, base + 3});
+  const protect::Complex complex = protect::build_complex(soup);
+  const auto pairs = protect::find_self_intersections(complex, 1000);
+  CHECK(pairs.size() >= 32);
+  for (const auto& [s, t] : pairs) {
+    CHECK(s < t);
+    CHECK(t >= complex.triangles.size() - 2);  // every pair involves the sheet
+  }
+  CHECK(protect::find_self_intersections(complex, 5).size() == 5);
+}
