@@ -29,6 +29,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
   const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
+  reject_self_intersections(complex, o.input);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};

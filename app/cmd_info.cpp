@@ -44,7 +44,13 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("corners", complex.corner_count());
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
+  const std::size_t crossing = protect::find_self_intersections(complex, kSelfIntersectionsCounted).size();
+  report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
   report("warnings", model.report.warnings.size());
+  if (crossing > 0 && !g.quiet)
+    std::fprintf(stderr,
+                 "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",
+                 o.input.c_str(), crossing == kSelfIntersectionsCounted ? "at least " : "", crossing);
   return kOk;
 }
 
@@ -58,7 +64,7 @@ Runner register_info(CLI::App& app) {
   app.footer(
       "Prints key=value lines: format, vertices, triangles, merged_vertices, "
       "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
-      "patches, warnings.\n\nExample:\n  delpsc info part.stl");
+      "patches, self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), warnings.\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

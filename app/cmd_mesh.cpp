@@ -78,6 +78,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("features");
   const auto t0 = Clock::now();
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
+  reject_self_intersections(complex, o.input);
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
   const refine::PolygonDomain domain(std::move(complex));

@@ -5,7 +5,10 @@
 #include <delpsc/io/error.h>
 #include <delpsc/io/read_model.h>
 #include <delpsc/protect/complex.h>
+#include <delpsc/protect/self_intersections.h>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "command.h"
 
@@ -41,6 +44,30 @@ inline protect::Complex load_complex(const io::ReadResult& model, const std::str
   } catch (const std::invalid_argument& e) {
     throw Failure{kBadInput, path + ": " + e.what()};
   }
+}
+
+/// At most this many self-intersecting pairs are looked for (info reports ">= this" as this).
+inline constexpr std::size_t kSelfIntersectionsCounted = 100;
+
+/// A bad-input exit when two triangles of the complex cross or overlap other than along a shared
+/// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
+/// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
+/// it hit a cap or ran out of memory. The message names the first pair and where it is.
+inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
+  const auto pairs = protect::find_self_intersections(complex, kSelfIntersectionsCounted);
+  if (pairs.empty()) return;
+  const auto [s, t] = pairs.front();
+  Vec3 c = Vec3::Zero();
+  for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;
+  char message[512];
+  std::snprintf(message, sizeof message,
+                "%s: the model intersects itself: triangles %u and %u (counted after splitting polygons into "
+                "triangles) cross or overlap near (%.6g, %.6g, %.6g), and %s%zu pair(s) in all; DelPSC needs "
+                "surfaces that meet only along shared edges and vertices - repair the model "
+                "(`delpsc info` counts the pairs)",
+                path.c_str(), complex.triangle_source[s], complex.triangle_source[t], c.x(), c.y(), c.z(),
+                pairs.size() == kSelfIntersectionsCounted ? "at least " : "", pairs.size());
+  throw Failure{kBadInput, message};
 }
 
 }  // namespace delpsc::app

@@ -27,6 +27,12 @@ expect() {
 # value KEY: the value of KEY= in the last command's stdout.
 value() { sed -n "s/^$1=//p" "$TMP/out" | head -n 1; }
 
+# write_crossing FILE: two triangles that cross each other (a self-intersecting model); the
+# commands that mesh must refuse it (exit 2) instead of refining for ever along the crossing.
+write_crossing() {
+  printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0.2 0.2 -0.5\n0.3 0.3 0.5\n0.9 0.1 0.5\n3 0 1 2\n3 3 4 5\n' >"$1"
+}
+
 # write_cube FILE: the unit cube [0,1]^3 as an OFF file, 12 outward-oriented triangles.
 write_cube() {
   cat >"$1" <<'MODEL'

@@ -30,4 +30,6 @@ expect 0 "" -- features "$TMP/cube.off" --preview "$TMP/cube.svg"
 grep -q "8 corners, 12 curves, 6 patches" "$TMP/cube.svg" || fail "preview title lacks the counts"
 expect 2 "SVG" -- features "$TMP/cube.off" --preview "$TMP/cube.png"
 expect 2 "no such directory" -- features "$TMP/cube.off" --preview "$TMP/no-such-dir/cube.svg"
+write_crossing "$TMP/crossing.off"
+expect 2 "intersects itself: triangles 0 and 1" -- features "$TMP/crossing.off"
 finish

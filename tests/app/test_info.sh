@@ -11,6 +11,11 @@ expect 0 "zero-area" -- info "$TMP/sheet.off"
 [[ "$(value zero_area_triangles)" == "1" ]] || fail "zero_area_triangles: $(value zero_area_triangles)"
 [[ "$(value boundary_edges)" == "4" ]] || fail "boundary_edges: $(value boundary_edges)"
 [[ "$(value bbox)" == "0 0 0 1 1 0" ]] || fail "bbox: $(value bbox)"
+[[ "$(value self_intersections)" == "0" ]] || fail "self_intersections: $(value self_intersections)"
+# A self-intersecting model: info counts the crossing pairs and warns, and still succeeds.
+write_crossing "$TMP/crossing.off"
+expect 0 "cross or overlap" -- info "$TMP/crossing.off"
+[[ "$(value self_intersections)" == "1" ]] || fail "crossing: self_intersections=$(value self_intersections)"
 
 # --report (shared by every subcommand): the same figures as JSON.
 expect 0 "" -- info "$TMP/sheet.off" --report "$TMP/info.json"

@@ -148,4 +148,6 @@ expect 2 "--size 0" -- mesh "$TMP/cube.off" --size 0 -o "$TMP/x.off"
 expect 2 "--size -1%" -- mesh "$TMP/cube.off" --size -1% -o "$TMP/x.off"
 expect 2 "unknown output format" -- mesh "$TMP/cube.off" -o "$TMP/x.xyz"
 expect 2 "" -- mesh "$TMP/cube.off"
+write_crossing "$TMP/crossing.off"
+expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
 finish
