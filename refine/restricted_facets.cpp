@@ -75,6 +75,29 @@ void RestrictedFacets::project_on_facet_line(const std::array<PointId, 3>& t, de
     e.target = o + (e.target - o).dot(n) * n;
 }
 
+// Whether update() may carry the outcome of f's examination over to the next triangulation
+// (a boundary facet of a later cavity is then not queried again): both cells and f itself far
+// from flat, so their orthocentres and f's normal carry a relative error of order
+// 1e-16 / kRatio, ~1e-11 of the cell's size - the size of the rounding any fresh query makes.
+// A nearly flat cell (almost co-spherical points on a planar patch) can put its orthocentre
+// visibly off (see project_on_facet_line): such a facet is examined afresh each time, as before.
+bool RestrictedFacets::well_conditioned(Facet f) const {
+  constexpr double kRatio = 1e-5;
+  const auto flat = [&](CellId c) {
+    const Vec3 a = dt_->point(dt_->vertex(c, 0)).point();
+    const Vec3 ab = dt_->point(dt_->vertex(c, 1)).point() - a;
+    const Vec3 ac = dt_->point(dt_->vertex(c, 2)).point() - a;
+    const Vec3 ad = dt_->point(dt_->vertex(c, 3)).point() - a;
+    return std::abs(ab.dot(ac.cross(ad))) <= kRatio * ab.norm() * ac.norm() * ad.norm();
+  };
+  const Facet m = dt_->mirror_facet(f);
+  if (dt_->is_infinite(f.cell) || dt_->is_infinite(m.cell) || flat(f.cell) || flat(m.cell)) return false;
+  const auto t = dt_->facet_vertices(f);
+  const Vec3 a = dt_->point(t[0]).point();
+  const Vec3 ab = dt_->point(t[1]).point() - a, ac = dt_->point(t[2]).point() - a;
+  return ab.cross(ac).norm() > kRatio * ab.norm() * ac.norm();
+}
+
 void RestrictedFacets::examine(Facet f) {
   // Vertices in increasing order: the orthocentre (and so the projection) and the record do not
   // depend on which cell the facet is seen from.
@@ -86,7 +109,13 @@ void RestrictedFacets::examine(Facet f) {
     domain_->intersect_ray(e.source, e.direction, hits_);
   else
     domain_->intersect_segment(e.source, e.target, hits_);
-  if (hits_.empty()) return;
+  if (hits_.empty()) {
+    if (e.is_ray || !well_conditioned(f)) {  // update() must not carry this outcome over
+      const Facet m = dt_->mirror_facet(f);
+      ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
+    }
+    return;
+  }
   std::array<WeightedPoint, 3> p{dt_->point(v[0]), dt_->point(v[1]), dt_->point(v[2])};
   // Hits come sorted by t then patch; group them per patch (few hits: quadratic is fine).
   std::uint32_t first = kNoFacet, last = kNoFacet;
@@ -200,10 +229,12 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       // π(x, p)} (§1.2's power diagram; a hidden point's cell was empty already). So if the old
       // dual met no patch - n's side of the facet holds no record, not even a stale one - the
       // new one meets none either, and the query is spared: ~40% of a cavity's facets are such
-      // boundary facets and most of them lie off the surface.
+      // boundary facets and most of them lie off the surface. The old outcome must have been
+      // computed well-conditioned (see well_conditioned), else it is recomputed.
       if (insertion && created_mark_[n] != update_epoch_) {
         const Facet old = inf == i ? f : m;  // the surviving cell's side
-        if (ref(old.cell, old.index).slot == kNoFacet) {
+        const FacetRef r = ref(old.cell, old.index);
+        if (r.slot == kNoFacet && r.stamp != kUntrusted) {
           ref(c, i) = {};
           continue;
         }

@@ -118,6 +118,10 @@ class RestrictedFacets {
   void project_on_facet_line(const std::array<PointId, 3>& t, delaunay::VoronoiEdge& e) const;
   /// Examines finite facet f (its dual edge against the domain) and records it on both sides.
   void examine(delaunay::Facet f);
+  bool well_conditioned(delaunay::Facet f) const;
+  /// The stamp of a ref without records whose facet's dual met no patch but was computed from
+  /// nearly flat cells (see well_conditioned): update() examines it again.
+  static constexpr std::uint32_t kUntrusted = 1;
   std::uint32_t new_record();
   FacetRef& ref(delaunay::CellId c, int i) { return facet_refs_[4 * std::size_t{c} + static_cast<std::size_t>(i)]; }
 
