@@ -88,14 +88,15 @@ bool RestrictedFacets::well_conditioned(Facet f) const {
     const Vec3 ab = dt_->point(dt_->vertex(c, 1)).point() - a;
     const Vec3 ac = dt_->point(dt_->vertex(c, 2)).point() - a;
     const Vec3 ad = dt_->point(dt_->vertex(c, 3)).point() - a;
-    return std::abs(ab.dot(ac.cross(ad))) <= kRatio * ab.norm() * ac.norm() * ad.norm();
+    const double volume = ab.dot(ac.cross(ad));  // squared below: no square roots
+    return volume * volume <= kRatio * kRatio * ab.squaredNorm() * ac.squaredNorm() * ad.squaredNorm();
   };
   const Facet m = dt_->mirror_facet(f);
   if (dt_->is_infinite(f.cell) || dt_->is_infinite(m.cell) || flat(f.cell) || flat(m.cell)) return false;
   const auto t = dt_->facet_vertices(f);
   const Vec3 a = dt_->point(t[0]).point();
   const Vec3 ab = dt_->point(t[1]).point() - a, ac = dt_->point(t[2]).point() - a;
-  return ab.cross(ac).norm() > kRatio * ab.norm() * ac.norm();
+  return ab.cross(ac).squaredNorm() > kRatio * kRatio * ab.squaredNorm() * ac.squaredNorm();
 }
 
 void RestrictedFacets::examine(Facet f) {
