@@ -2,10 +2,13 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include <delpsc/kernel/predicates.h>
 
 #include "error.h"
 
@@ -20,12 +23,24 @@ bool has_suffix(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-void require_finite(const WeightedPoint& p, const std::string& path, const std::string& where) {
+// Finite, and inside the range where the predicates are exact (kernel/predicates.h): a point
+// set is the triangulation's exact input, so nothing is rounded to fit - it is refused.
+void require_in_exact_range(const WeightedPoint& p, const std::string& path, const std::string& where) {
   const double v[4] = {p.x, p.y, p.z, p.w};
   static const char* names[4] = {"x", "y", "z", "w"};
-  for (int k = 0; k < 4; ++k)
-    if (!std::isfinite(v[k]))
-      throw Error(path + ": " + where + ": " + names[k] + " is not a finite number");
+  for (int k = 0; k < 4; ++k) {
+    if (!std::isfinite(v[k])) throw Error(path + ": " + where + ": " + names[k] + " is not a finite number");
+    const bool weight = k == 3;
+    const double m = std::fabs(v[k]);
+    const double lo = weight ? kernel::kMinExactWeight : kernel::kMinExactMagnitude;
+    const double hi = weight ? kernel::kMaxExactWeight : kernel::kMaxExactMagnitude;
+    if (m == 0 || (lo <= m && m <= hi)) continue;
+    char value[32];
+    std::snprintf(value, sizeof value, "%.6g", v[k]);
+    throw Error(path + ": " + where + ": " + names[k] + " = " + value + " is outside 0 or " +
+                (weight ? "[2^-280, 2^280]" : "[2^-140, 2^140]") +
+                " in magnitude, the range where the predicates are exact: scale the points");
+  }
 }
 
 std::vector<WeightedPoint> read_binary(const std::string& path) {
@@ -42,7 +57,7 @@ std::vector<WeightedPoint> read_binary(const std::string& path) {
       !in.read(reinterpret_cast<char*>(points.data()), static_cast<std::streamsize>(size)))
     throw Error(path + ": read failed");
   for (std::size_t i = 0; i < points.size(); ++i)
-    require_finite(points[i], path, "record " + std::to_string(i) + " (byte " +
+    require_in_exact_range(points[i], path, "record " + std::to_string(i) + " (byte " +
                                         std::to_string(i * 32) + ")");
   return points;
 }
@@ -75,7 +90,7 @@ std::vector<WeightedPoint> read_text(const std::string& path) {
       throw Error(path + ": line " + std::to_string(line_no) +
                   ": expected x y z [w], found " + std::to_string(n) + " number(s)");
     WeightedPoint p{v[0], v[1], v[2], n == 4 ? v[3] : 0.0};
-    require_finite(p, path, "line " + std::to_string(line_no));
+    require_in_exact_range(p, path, "line " + std::to_string(line_no));
     points.push_back(p);
   }
   if (in.bad()) throw Error(path + ": read failed");

@@ -108,7 +108,17 @@ std::uint32_t SoupBuilder::find_or_insert(const Vec3& p) {
 
 bool SoupBuilder::add_vertex(double x, double y, double z) {
   if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return false;
-  file_to_merged_.push_back(find_or_insert(Vec3(x, y, z)));
+  Vec3 p(x, y, z);
+  for (int k = 0; k < 3; ++k) {
+    const double m = std::fabs(p[k]);
+    if (m != 0 && m < kernel::kMinExactMagnitude) {
+      p[k] = 0;
+      ++flushed_to_zero_;
+    } else if (m > kernel::kMaxExactMagnitude && first_too_large_ == SIZE_MAX) {
+      first_too_large_ = file_to_merged_.size();
+    }
+  }
+  file_to_merged_.push_back(find_or_insert(p));
   return true;
 }
 
@@ -140,17 +150,15 @@ ReadResult SoupBuilder::finish() {
                                "triangle " + std::to_string(report_.degenerate_triangles[0]));
 
   // The exact predicates are guaranteed for coordinates 0 or of magnitude in [2^-140, 2^140]
-  // (kernel/predicates.h); say so rather than let a far-off model fail mysteriously later.
-  std::size_t out_of_range = 0;
-  for (const Vec3& p : V)
-    for (int k = 0; k < 3; ++k) {
-      const double m = std::fabs(p[k]);
-      if (m != 0 && (m < 0x1p-140 || m > 0x1p140)) ++out_of_range;
-    }
-  if (out_of_range > 0)
-    report_.warnings.push_back(std::to_string(out_of_range) +
-                               " coordinate(s) outside the range of exact predicates "
-                               "(0 or magnitude in [2^-140, 2^140]): rescale the model");
+  // (kernel/predicates.h): beyond that a model would fail later, and mysteriously.
+  if (first_too_large_ != SIZE_MAX)
+    fail("", "vertex " + std::to_string(first_too_large_) +
+                 " has a coordinate larger than 2^140 (about 1.4e42) in magnitude, beyond the range where the "
+                 "exact predicates are exact: scale the model down");
+  if (flushed_to_zero_ > 0)
+    report_.warnings.push_back(std::to_string(flushed_to_zero_) +
+                               " coordinate(s) smaller than 2^-140 (about 7e-43) in magnitude set to 0, the "
+                               "range of the exact predicates");
   if (report_.merged_vertices > 0 && report_.format.rfind("STL", 0) != 0)
     report_.warnings.push_back(std::to_string(report_.merged_vertices) +
                                " duplicated vertex record(s) merged");

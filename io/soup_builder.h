@@ -40,7 +40,9 @@ class SoupBuilder {
   void reserve(std::size_t file_vertices, std::size_t triangles);
 
   /// Adds the next vertex of the file and returns false, adding nothing, if a coordinate is NaN
-  /// or infinite (the caller reports it with its place). Amortised O(1).
+  /// or infinite (the caller reports it with its place). Amortised O(1). The exact predicates
+  /// cover coordinates 0 or of magnitude in [2^-140, 2^140] (kernel/predicates.h): a smaller one
+  /// is set to 0 (a move below 1e-42, reported as a warning), a larger one makes finish() fail.
   bool add_vertex(double x, double y, double z);
   std::size_t file_vertex_count() const { return file_to_merged_.size(); }
 
@@ -59,6 +61,8 @@ class SoupBuilder {
   ReadReport report_;
   TriangleSoup soup_;
   std::vector<std::uint32_t> file_to_merged_;
+  std::size_t flushed_to_zero_ = 0;        // coordinates below 2^-140 set to 0
+  std::size_t first_too_large_ = SIZE_MAX;  // file index of the first vertex beyond 2^140
   // Open addressing, linear probing: slot = merged vertex index + 1, 0 = empty. Kept at most half
   // full. Flat arrays beat std::unordered_map by several times on millions of STL corners.
   std::vector<std::uint32_t> slots_;

@@ -46,6 +46,12 @@
 
 namespace delpsc::kernel {
 
+/// The range above, for callers that validate input: coordinates 0 or of magnitude in
+/// [kMinExactMagnitude, kMaxExactMagnitude], weights 0 or of magnitude in [kMinExactWeight,
+/// kMaxExactWeight].
+inline constexpr double kMinExactMagnitude = 0x1p-140, kMaxExactMagnitude = 0x1p140;
+inline constexpr double kMinExactWeight = 0x1p-280, kMaxExactWeight = 0x1p280;
+
 // ---------------------------------------------------------------------------------------------
 // Plain predicates (exact, may return 0)
 // ---------------------------------------------------------------------------------------------

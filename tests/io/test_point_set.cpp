@@ -30,8 +30,23 @@ std::string error_of(const std::string& path) {
 }
 }  // namespace
 
+TEST_CASE("coordinates and weights outside the predicates' exact range are refused, naming them") {
+  const std::string path = temp_path("range.txt");
+  write_file(path, "0 0 0 0\n1e300 0 0 0\n");
+  CHECK(error_of(path).find("line 2: x = 1e+300 is outside 0 or [2^-140, 2^140]") != std::string::npos);
+  write_file(path, "0 -1e-300 0 0\n");
+  CHECK(error_of(path).find("line 1: y = -1e-300 is outside") != std::string::npos);
+  write_file(path, "0 0 1e-43 0\n");
+  CHECK(error_of(path).find("z = ") != std::string::npos);
+  write_file(path, "0 0 0 1e90\n");
+  CHECK(error_of(path).find("w = 1e+90 is outside 0 or [2^-280, 2^280]") != std::string::npos);
+  write_file(path, "0 0 0 0\n1e42 -1e-42 0 1e-84\n");  // just inside the bounds
+  CHECK(error_of(path).empty());
+  std::remove(path.c_str());
+}
+
 TEST_CASE("point sets round-trip exactly through both formats") {
-  const std::vector<WeightedPoint> pts = {{0.1, -2.5e-300, 3e200, 0}, {1.0 / 3, 2, 3, 0.25}};
+  const std::vector<WeightedPoint> pts = {{0.1, -0x1p-140, 0x1p140, 0x1p280}, {1.0 / 3, 2, 3, 0.25}};
   for (const char* name : {"a.bin", "a.txt"}) {
     const std::string path = temp_path(name);
     io::write_point_set(path, pts);

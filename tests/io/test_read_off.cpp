@@ -92,6 +92,7 @@ TEST_CASE("OFF: errors name the line and the problem") {
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "line 6: face 0 has 2 vertices; at least 3"},
       {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 1 has a NaN or infinite"},
       {"OFF\n3 1 0\n0 0 0\n1 1e999 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 1 has a NaN or infinite"},
+      {"OFF\n3 1 0\n0 0 0\n1 -2e42 0\n0 1 0\n3 0 1 2\n", "vertex 1 has a coordinate larger than 2^140"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n", "unexpected end of file in vertex 2 of 3"},
       {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "unexpected end of file in face 1 of 2"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1", "unexpected end of file in face 0 of 1"},
@@ -118,4 +119,14 @@ TEST_CASE("OFF: text after the last face is a warning, not an error") {
   CHECK(r.soup.triangles.size() == 1);
   REQUIRE(r.report.warnings.size() == 1);
   CHECK(r.report.warnings[0].find("line 7") != std::string::npos);
+}
+
+TEST_CASE("OFF: coordinates below the predicates' range are set to 0, with a warning") {
+  const io::ReadResult r =
+      io::read_model_from_memory("OFF\n3 1 0\n0 0 0\n1 1e-300 0\n0 -1e-43 1\n3 0 1 2\n", io::ModelFormat::off, "t.off");
+  REQUIRE(r.soup.vertices.size() == 3);
+  CHECK(r.soup.vertices[1] == Vec3(1, 0, 0));
+  CHECK(r.soup.vertices[2] == Vec3(0, 0, 1));
+  REQUIRE(r.report.warnings.size() == 1);
+  CHECK(r.report.warnings[0].find("2 coordinate(s) smaller than 2^-140") != std::string::npos);
 }
