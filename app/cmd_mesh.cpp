@@ -23,6 +23,7 @@
 #include "command.h"
 #include "mesh_report.h"
 #include "model_input.h"
+#include "size_limits.h"
 #include "output_paths.h"
 #include "progress.h"
 #include "size_option.h"
@@ -30,22 +31,6 @@
 namespace delpsc::app {
 
 namespace {
-
-/// The cap on vertices when --max-vertices is not given, so that a model the mesher cannot
-/// finish (or one that needs far more than λ suggests) ends with a message instead of running
-/// until memory is gone. With facet_size λ alone the output has 0.66 A / λ² vertices for surface
-/// area A on every libcgal-demo model (fandisk, part, anchor, joint, elephant at 0.5%); the cap is
-/// 50 times that, and never below two million (the 1° wedge at 0.5% needs 438,000).
-std::size_t automatic_vertex_cap(const protect::Complex& complex, double lambda) {
-  double area = 0;
-  for (const auto& t : complex.triangles) {
-    const Vec3& a = complex.vertices[t[0]];
-    area += 0.5 * (complex.vertices[t[1]] - a).cross(complex.vertices[t[2]] - a).norm();
-  }
-  const double estimate = 0.66 * area / (lambda * lambda);
-  constexpr double kFloor = 2e6, kCeiling = 1e12;  // the ceiling keeps the cast defined
-  return static_cast<std::size_t>(std::min(kCeiling, std::max(kFloor, 50 * estimate)));
-}
 
 struct MeshCommandOptions {
   std::string input;
@@ -101,6 +86,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   const refine::PolygonDomain domain(std::move(complex));
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());
+  reject_size_for_balls(domain.complex(), lambda, protect::ProtectOptions{}.max_balls, o.size);
+  const double expected = expected_vertices(domain.complex(), lambda);
+  if (!o.max_vertices) reject_size_for_vertices(expected, o.size);
 
   phases.emplace_back("features", seconds_since(t0));
   progress.phase("protect");
@@ -121,7 +109,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (!o.facet_distance.empty())
     options.facet_distance = parse_size(o.facet_distance, (box.hi - box.lo).norm(), "--facet-distance");
   options.facet_angle = o.facet_angle;
-  options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(domain.complex(), lambda));
+  options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(expected));
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
   progress.phase("refine");
   refine::Mesher mesher(domain, balls, options);
@@ -233,7 +221,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     if (s.stopped_at_max_vertices && !o.max_vertices)
       std::fprintf(stderr,
                    "delpsc: %zu vertices is the automatic cap for this model at --size %s (50 times what the size "
-                   "alone needs): a thin feature or a crossing of the model may stop refinement from ending; "
+                   "alone needs, within [2e6, 2e7]): a thin feature or a crossing of the model may stop refinement from ending; "
                    "--max-vertices N raises the cap, --max-vertices 0 removes it\n",
                    options.max_vertices, o.size.c_str());
     list_failing(mesher, g);
@@ -268,7 +256,8 @@ Runner register_mesh(CLI::App& app) {
       ->check(CLI::Range(0.0, refine::kMaxFacetAngleDegrees));
   app.add_option("--max-vertices", o->max_vertices,
                  "Stop refining at this many vertices; the mesh reached is still written, exit code 1 (default: 50 times "
-                 "the vertices the size alone needs, at least two million; 0: no limit)");
+                 "the vertices the size alone needs, within two and twenty million; a size needing more than ten "
+                 "million is refused unless this is given; 0: no limit)");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");

@@ -11,6 +11,7 @@
 
 #include "command.h"
 #include "model_input.h"
+#include "size_limits.h"
 #include "size_option.h"
 
 namespace delpsc::app {
@@ -109,6 +110,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
 
   const double diagonal = protect::BallSet(complex).diagonal();
   const double lambda = parse_size(o.size, diagonal);
+  reject_size_for_balls(complex, lambda, protect::ProtectOptions{}.max_balls, o.size);
   protect::ProtectStats stats;
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<protect::BallSet> balls;

@@ -150,4 +150,6 @@ expect 2 "unknown output format" -- mesh "$TMP/cube.off" -o "$TMP/x.xyz"
 expect 2 "" -- mesh "$TMP/cube.off"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
+# A size the job could never finish at is refused at once, not after minutes at a cap.
+expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
 finish
