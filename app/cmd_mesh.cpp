@@ -106,8 +106,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   refine::ProtectedBalls balls(*ball_set);
   refine::MesherOptions options;
   options.facet_size = lambda;
-  if (!o.facet_distance.empty())
+  if (!o.facet_distance.empty()) {
     options.facet_distance = parse_size(o.facet_distance, (box.hi - box.lo).norm(), "--facet-distance");
+    reject_facet_distance(options.facet_distance, lambda, o.facet_distance, o.max_vertices.has_value());
+  }
   options.facet_angle = o.facet_angle;
   options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(expected));
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };

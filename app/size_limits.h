@@ -64,4 +64,16 @@ inline void reject_size_for_vertices(double expected, const std::string& size_te
   throw Failure{kBadInput, message};
 }
 
+/// Bad-input exit when facet_distance is below λ / 10^4 and the user did not ask for a vertex
+/// cap: on a surface of curvature radius R a triangle of circumradius r stands about r² / 2R off
+/// it, so the distance d asks for r ≈ sqrt(2 R d); at d = λ / 10^4 and R = 20 λ that is λ / 16,
+/// some 250 times the vertices λ alone gives - past the automatic cap, after minutes.
+inline void reject_facet_distance(double distance, double lambda, const std::string& text, bool capped) {
+  if (capped || distance >= 1e-4 * lambda) return;
+  throw Failure{kBadInput, "--facet-distance " + text +
+                               " is below 1/10000 of --size: on any curved part that asks for hundreds of times "
+                               "the vertices the size alone needs; choose a larger distance, or give "
+                               "--max-vertices to try anyway"};
+}
+
 }  // namespace delpsc::app

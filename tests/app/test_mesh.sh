@@ -152,4 +152,5 @@ write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
+expect 2 "is below 1/10000 of --size" -- mesh "$TMP/cube.off" --size 10% --facet-distance 1e-12 -o "$TMP/x.off"
 finish
