@@ -2,7 +2,8 @@
 # cmake --install gives a usable package: every header the installed headers include is
 # installed, the installed delpsc runs, and examples/embed configures with find_package(delpsc)
 # against the temporary prefix (Eigen found through the package's config), builds, runs, and
-# prints the same triangulation counts as `delpsc triangulate` on the same points. The
+# prints the same triangulation counts as `delpsc triangulate` on the same points, and meshes the
+# sample part (the README's snippet) to the same mesh as `delpsc mesh`. The
 # add_subdirectory route is configured too (building it would compile the library a second time).
 source "$(dirname "$0")/lib.sh"
 
@@ -72,6 +73,17 @@ awk 'NR == 2 { n = $1 } NR > 2 && NR <= 2 + n { print $1, $2, $3 }' "$SOURCE/sam
 expect 0 "" -- triangulate "$TMP/part.xyz"
 [[ -n "$embed_cells" && "$embed_cells" == "$(value finite_cells)" ]] && pass \
   || fail "part finite cells: embed $embed_cells, delpsc triangulate $(value finite_cells)"
+
+# The README's meshing snippet (examples/embed/mesh_model.cpp) against the installed package: the
+# same mesh as `delpsc mesh` at the same size, G1 holding, a Medit file written.
+"$EMBED/mesh_model" "$SOURCE/samples/part.off" "$TMP/embed.mesh" 0.02 >"$TMP/out" 2>"$TMP/err" \
+  || fail "mesh_model exited $?: $(head -c 300 "$TMP/err")"
+embed_vertices=$(value vertices)
+embed_triangles=$(value triangles)
+[[ "$(value g1)" == "true" ]] && grep -q "^Triangles" "$TMP/embed.mesh" && pass || fail "mesh_model: $(tr '\n' ' ' <"$TMP/out")"
+expect 0 "" -- mesh "$SOURCE/samples/part.off" -o "$TMP/delpsc.mesh" --size 2% -q
+[[ -n "$embed_vertices" && "$embed_vertices" == "$(value vertices)" && "$embed_triangles" == "$(value triangles)" ]] && pass \
+  || fail "mesh_model: $embed_vertices vertices, $embed_triangles triangles; delpsc mesh: $(value vertices), $(value triangles)"
 
 # Bad input reaches the embedding program as an io::Error.
 "$EMBED/embed" "$TMP/missing.off" >"$TMP/out" 2>"$TMP/err"
