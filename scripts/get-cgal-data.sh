@@ -12,7 +12,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 dest="$root/data/cgal-demo"
 models=("$@")
 if [ ${#models[@]} -eq 0 ]; then
-  models=(fandisk part anchor joint elephant)
+  models=(fandisk part anchor joint elephant cube sphere)
 fi
 
 missing=0

@@ -23,6 +23,8 @@ TEST_CASE("part") { accept_cgal_demo("part"); }
 TEST_CASE("anchor") { accept_cgal_demo("anchor"); }
 TEST_CASE("joint") { accept_cgal_demo("joint"); }
 TEST_CASE("elephant") { accept_cgal_demo("elephant"); }
+TEST_CASE("cube") { accept_cgal_demo("cube"); }
+TEST_CASE("sphere") { accept_cgal_demo("sphere"); }
 
 // With CGAL's criteria as the benchmark gives them (facet_distance = λ/10, facet_angle = 25°):
 // at 043e8ef anchor at 0.5% ran away here - points 1e-10 apart failing D1/D2 for ever, 74,000

@@ -130,7 +130,7 @@ TEST_CASE("disc sheet") { mesh_model(io::make_disc_sheet(24, 4), 0.04); }
 // diagonal; G2 per patch is not expected at that size (fandisk's thin patches are not resolved).
 TEST_CASE("libcgal-demo models at 4%") {
   const auto dir = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
-  for (const char* name : {"fandisk", "part", "anchor", "joint", "elephant"}) {
+  for (const char* name : {"fandisk", "part", "anchor", "joint", "elephant", "cube", "sphere"}) {
     const auto path = dir / (std::string(name) + ".off");
     if (!std::filesystem::exists(path)) {
       MESSAGE(name << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
