@@ -213,17 +213,22 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     reach.extend(a);
     reach.extend(b);
   }
+  const auto may_hit = [&](std::uint32_t i) {
+    const Box3 box = nodes_[i].box();
+    return reach.overlaps(box) && segment_may_hit_box(a, d, inv_d, t_max, box);
+  };
+  if (!may_hit(0)) return;
+  // A node is pushed only once its box passed: the children are tested at the parent, the left
+  // one (the next node in memory) while the parent's line is still in cache.
   std::array<std::uint32_t, kStackSize> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    const Box3 box = node.box();
-    if (!reach.overlaps(box) || !segment_may_hit_box(a, d, inv_d, t_max, box)) continue;
     if (node.count == 0) {
       const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-      stack[top++] = node.first_or_right;
-      stack[top++] = self + 1;
+      if (may_hit(node.first_or_right)) stack[top++] = node.first_or_right;
+      if (may_hit(self + 1)) stack[top++] = self + 1;
       continue;
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
