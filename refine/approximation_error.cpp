@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -137,10 +138,15 @@ std::size_t pieces(double length, double h) {
 }
 
 /// The surface samples of the header: per triangle its corners not sampled yet (so each vertex
-/// once), then its barycentric grid of step 1/n without the corners.
-void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> triangles, double h, FarthestSample& to) {
+/// once), then its barycentric grid of step 1/n without the corners. Only the triangles from
+/// index `first` on; the corners of those before count as sampled, so that splitting the
+/// triangles between threads samples every vertex once all the same.
+void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> triangles, double h, FarthestSample& to,
+                    std::size_t first = 0) {
   std::vector<std::uint8_t> sampled(vertices.size(), 0);
-  for (const Triangle& t : triangles) {
+  for (const Triangle& t : triangles.first(first))
+    for (const std::uint32_t v : t) sampled[v] = 1;
+  for (const Triangle& t : triangles.subspan(first)) {
     for (const std::uint32_t v : t)
       if (!sampled[v]) {
         sampled[v] = 1;
@@ -249,13 +255,26 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
   e.diagonal = box.empty() ? 0 : box.diagonal();
   e.sample_spacing = h;
 
+  // Both directions only read const trees (queries are thread-safe), so they run on two threads:
+  // the measurement costs a third of the refinement's time at λ/2 spacing, and users wait for
+  // it. Input to output is the dearer (its queries search the output's many triangles: 0.53 s
+  // against 0.09 s on joint at 0.5%), so its first half of the input triangles gets the second
+  // thread and this one does the rest. Each vertex is still sampled once.
   const kernel::AabbTree output_tree(output.vertices, output.triangles);
+  const std::span<const Triangle> input_triangles(complex.triangles);
+  const std::size_t half = input_triangles.size() / 2;
+  auto first_half_to_output = std::async(std::launch::async, [&] {
+    FarthestSample to_output(output.vertices, output.triangles, output_tree);
+    sample_surface(complex.vertices, input_triangles.first(half), h, to_output);  // corners first seen here
+    return to_output.result();
+  });
   FarthestSample to_input(complex.vertices, complex.triangles, input.tree());
   sample_surface(output.vertices, output.triangles, h, to_input);
   e.output_to_input = to_input.result();
   FarthestSample to_output(output.vertices, output.triangles, output_tree);
-  sample_surface(complex.vertices, complex.triangles, h, to_output);
+  sample_surface(complex.vertices, input_triangles, h, to_output, half);
   e.input_to_output = to_output.result();
+  keep_larger(e.input_to_output, first_half_to_output.get());
 
   const auto curve_count = static_cast<std::uint32_t>(complex.curve_count());
   const EdgesByCurve edges = group_edges(output, curve_count);

@@ -89,7 +89,7 @@ struct ApproximationError {
 /// are the input complex's ids (as the mesher writes them). Throws std::invalid_argument if h is
 /// not positive and finite, or if an index of `output` is out of range or edge_curve has neither
 /// 0 nor one entry per edge. Both surfaces empty gives 0; one empty gives an infinite distance
-/// from the other.
+/// from the other. Runs the output-to-input direction on a second thread (std::async).
 ApproximationError measure_approximation(const io::SurfaceMesh& output, const PolygonDomain& input,
                                          const ApproximationOptions& options);
 
