@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <delpsc/refine/admissibility_check.h>
+
 namespace delpsc::test {
 
 void run_mesher_and_check(refine::Mesher& mesher) {
@@ -10,6 +12,8 @@ void run_mesher_and_check(refine::Mesher& mesher) {
   CHECK_FALSE(mesher.stats().stuck);
   CHECK_FALSE(mesher.stats().stopped_at_max_vertices);
   CHECK(mesher.failing_vertices().empty());
+  // Admissibility (§2.1): no unweighted vertex in or on a protecting ball, checked independently.
+  for (const std::string& p : refine::check_admissibility(mesher.triangulation())) FAIL_CHECK(p);
 }
 
 refine::SkeletonReport check_g1(const io::SurfaceMesh& mesh, const refine::Domain& domain) {
