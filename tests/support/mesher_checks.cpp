@@ -12,6 +12,9 @@ void run_mesher_and_check(refine::Mesher& mesher) {
   CHECK_FALSE(mesher.stats().stuck);
   CHECK_FALSE(mesher.stats().stopped_at_max_vertices);
   CHECK(mesher.failing_vertices().empty());
+  // The regular triangulation itself after all the insertions and ball removals (§2.3 RefineBall).
+  std::string why;
+  CHECK_MESSAGE(mesher.triangulation().is_valid(&why), why);
   // Admissibility (§2.1): no unweighted vertex in or on a protecting ball, checked independently.
   for (const std::string& p : refine::check_admissibility(mesher.triangulation())) FAIL_CHECK(p);
 }

@@ -11,7 +11,8 @@
 namespace delpsc::test {
 
 /// Runs `mesher` and checks that it terminated normally with the disk condition everywhere and
-/// the triangulation admissible (refine/admissibility_check.h).
+/// the triangulation valid (RegularTriangulation::is_valid) and admissible
+/// (refine/admissibility_check.h).
 void run_mesher_and_check(refine::Mesher& mesher);
 
 /// G1 of `mesh` against `domain`, vertices accepted within 1e-9 of the diagonal of the domain;
