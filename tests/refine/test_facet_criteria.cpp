@@ -146,7 +146,7 @@ io::SurfaceMesh mesh_with(const io::TriangleSoup& soup, refine::MesherOptions op
   refine::ProtectedBalls balls(set);
   options.max_vertices = 40000;
   refine::Mesher mesher(domain, balls, options);
-  test::run_mesher_and_check(mesher);
+  test::run_mesher_and_check(mesher, &set);
   const io::SurfaceMesh mesh = mesher.output();
   test::check_g1(mesh, domain);
   const FacetCriteria criteria(refine::FacetCriteriaOptions{options.facet_size, options.sizing,

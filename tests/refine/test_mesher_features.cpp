@@ -41,7 +41,7 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, bool loca
   options.max_vertices = 30000;
   options.local_disk_refinement = local_disk_refinement;
   refine::Mesher mesher(domain, balls, options);
-  test::run_mesher_and_check(mesher);
+  test::run_mesher_and_check(mesher, &set);
   Outcome out;
   const io::SurfaceMesh mesh = mesher.output();
   out.report = test::check_g1(mesh, domain);
@@ -97,7 +97,7 @@ TEST_CASE("the paper's global choice in step 2(a)") {
   options.max_vertices = 30000;
   options.local_disk_refinement = false;
   refine::Mesher mesher(domain, balls, options);
-  test::run_mesher_and_check(mesher);
+  test::run_mesher_and_check(mesher, &set);
   test::check_g1(mesher.output(), domain);
   CHECK(mesher.stats().ball_refinements > 0);
 }

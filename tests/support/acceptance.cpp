@@ -34,7 +34,7 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   options.facet_distance = criteria.facet_distance_of_lambda * lambda;
   options.facet_angle = criteria.facet_angle_degrees;
   refine::Mesher mesher(domain, balls, options);
-  run_mesher_and_check(mesher);
+  run_mesher_and_check(mesher, &set);
   const io::SurfaceMesh mesh = mesher.output();
   const refine::SkeletonReport report = check_g1(mesh, domain);
   // G2 per patch: protect::Patch counts the input patch cut open along its slits, and so do the

@@ -2,11 +2,12 @@
 
 #include <doctest/doctest.h>
 
+#include <delpsc/protect/ball_checker.h>
 #include <delpsc/refine/admissibility_check.h>
 
 namespace delpsc::test {
 
-void run_mesher_and_check(refine::Mesher& mesher) {
+void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls) {
   mesher.run();
   INFO("message: " << mesher.stats().message);
   CHECK_FALSE(mesher.stats().stuck);
@@ -17,6 +18,11 @@ void run_mesher_and_check(refine::Mesher& mesher) {
   CHECK_MESSAGE(mesher.triangulation().is_valid(&why), why);
   // Admissibility (§2.1): no unweighted vertex in or on a protecting ball, checked independently.
   for (const std::string& p : refine::check_admissibility(mesher.triangulation())) FAIL_CHECK(p);
+  if (balls != nullptr) {
+    const protect::BallCheck check = protect::check_balls(*balls);
+    for (const std::string& p : check.problems) INFO(p);
+    CHECK(check.ok());
+  }
 }
 
 refine::SkeletonReport check_g1(const io::SurfaceMesh& mesh, const refine::Domain& domain) {

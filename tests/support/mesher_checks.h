@@ -4,6 +4,7 @@
 #pragma once
 
 #include <delpsc/io/surface_mesh.h>
+#include <delpsc/protect/balls.h>
 #include <delpsc/refine/domain.h>
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/skeleton_check.h>
@@ -12,8 +13,9 @@ namespace delpsc::test {
 
 /// Runs `mesher` and checks that it terminated normally with the disk condition everywhere and
 /// the triangulation valid (RegularTriangulation::is_valid) and admissible
-/// (refine/admissibility_check.h).
-void run_mesher_and_check(refine::Mesher& mesher);
+/// (refine/admissibility_check.h); with `balls` (the set the mesher's ProtectedBalls refines),
+/// also that the balls still satisfy C1-C3 and cover the curves after every RefineBall (§2).
+void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls = nullptr);
 
 /// G1 of `mesh` against `domain`, vertices accepted within 1e-9 of the diagonal of the domain;
 /// CHECKs it and returns the report (per-patch topology for G2 checks).
