@@ -100,6 +100,7 @@ std::vector<WeightedPoint> read_text(const std::string& path) {
 }  // namespace
 
 std::vector<WeightedPoint> read_point_set(const std::string& path) {
+  check_input_file(path, "point set file");
   return has_suffix(path, ".bin") ? read_binary(path) : read_text(path);
 }
 

@@ -23,8 +23,8 @@ std::string lower_extension(const std::string& path) {
 /// The whole file in memory: every parser then works on one contiguous buffer, and the binary
 /// ones can check counts against the exact size before allocating.
 std::string read_file(const std::string& path) {
+  check_input_file(path, "model file");
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a model file");
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
   std::string bytes;
@@ -41,6 +41,15 @@ std::string read_file(const std::string& path) {
 }
 
 }  // namespace
+
+void check_input_file(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || fs::is_regular_file(st) || fs::is_fifo(st)) return;
+  if (fs::is_directory(st)) throw Error(path + ": is a directory, not a " + what);
+  throw Error(path + ": is a device or socket, not a " + what + ": it may never end (copy the data to a file)");
+}
 
 std::optional<ModelFormat> model_format_from_path(const std::string& path) {
   const std::string ext = lower_extension(path);

@@ -26,6 +26,11 @@ printf 'garbage here\n' >"$TMP/bad.txt"
 expect 2 "is not a number" -- triangulate "$TMP/bad.txt"
 head -c 40 /dev/urandom >"$TMP/bad.bin"
 expect 2 "not a multiple of 32" -- triangulate "$TMP/bad.bin"
+# /dev/zero behind a .bin name read as 0 points (exit 0), behind a text name until memory ran out.
+ln -s /dev/zero "$TMP/zero.bin"
+expect 2 "zero.bin: is a device or socket, not a point set file" -- triangulate "$TMP/zero.bin"
+ln -s /dev/zero "$TMP/zero.txt"
+expect 2 "zero.txt: is a device or socket" -- triangulate "$TMP/zero.txt"
 expect 2 "unknown kind" -- triangulate --generate cube:10
 expect 2 "" -- triangulate --generate uniform:10 --remove -3
 expect 2 "exactly one" -- triangulate "$TMP/pts.txt" --generate uniform:10
