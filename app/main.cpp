@@ -47,6 +47,11 @@ int main(int argc, char** argv) {
     if (!global.report_path.empty()) check_output_path(global.report_path, "--report");
     for (auto& [sub, run] : commands)
       if (sub->parsed()) {
+        std::vector<std::pair<std::string, std::string>> files;  // --report first: see check_distinct_files
+        for (const std::string name : {"--report", "--output", "--balls", "--preview", "IN"})
+          if (const CLI::Option* file = sub->get_option_no_throw(name); file && file->count() > 0)
+            files.emplace_back(name == "IN" ? "the input" : name == "--output" ? "-o" : name, file->as<std::string>());
+        check_distinct_files(files);
         final_report().add_json("command", json_string(sub->get_name()));
         final_report().add_json("version", json_string(delpsc::kVersion));
         if (const CLI::Option* in = sub->get_option_no_throw("IN"); in && in->count() > 0)

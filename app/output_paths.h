@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "command.h"
 
@@ -32,6 +34,25 @@ inline void check_preview_path(const std::string& path) {
   if (!path.ends_with(".svg"))
     throw Failure{kBadInput, "--preview " + path + ": the preview is an SVG picture (name it *.svg)"};
   check_output_path(path, "--preview");
+}
+
+/// Throws Failure (bad input) when two of `files` - (option, path) pairs, the input model among
+/// them - name the same file: `-o x.off --report x.off` wrote the mesh and then the JSON report
+/// over it, and `-o model.off` on model.off replaced the input. The message starts with the
+/// option that comes first in `files` (main lists --report first, so that a refused report is
+/// not written). Paths are compared after resolving symbolic links and "..", where they exist.
+inline void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  namespace fs = std::filesystem;
+  const auto resolved = [](const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(path, ec);
+    return ec ? fs::absolute(path, ec).lexically_normal() : p;
+  };
+  for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t j = i + 1; j < files.size(); ++j)
+      if (resolved(files[i].second) == resolved(files[j].second))
+        throw Failure{kBadInput, files[i].first + " " + files[i].second + ": the same file as " + files[j].first + " " +
+                                     files[j].second + "; give each a name of its own"};
 }
 
 }  // namespace delpsc::app

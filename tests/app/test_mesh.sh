@@ -153,4 +153,19 @@ expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
 expect 2 "is below 1/10000 of --size" -- mesh "$TMP/cube.off" --size 10% --facet-distance 1e-12 -o "$TMP/x.off"
+# A device behind a model's name (read until memory ran out) and a directory are no model files.
+ln -s /dev/zero "$TMP/zero.off"
+expect 2 "zero.off: is a device or socket, not a model file" -- mesh "$TMP/zero.off" -o "$TMP/x.off"
+mkdir "$TMP/dir.off"
+expect 2 "dir.off: is a directory, not a model file" -- mesh "$TMP/dir.off" -o "$TMP/x.off"
+# Two options naming one file (the report was written over the mesh), or the output the input:
+# refused before anything is read or written; a refused --report is not written either.
+expect 2 "--report $TMP/same.off: the same file as -o $TMP/./same.off" -- \
+  mesh "$TMP/cube.off" -o "$TMP/./same.off" --report "$TMP/same.off"
+[[ ! -e "$TMP/same.off" ]] || fail "a file was written despite -o and --report naming it both"
+expect 2 "-o $TMP/x.off: the same file as --balls $TMP/dir.off/../x.off" -- \
+  mesh "$TMP/cube.off" -o "$TMP/x.off" --balls "$TMP/dir.off/../x.off"
+cp "$TMP/cube.off" "$TMP/keep.off"
+expect 2 "-o $TMP/keep.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/keep.off"
+cmp -s "$TMP/cube.off" "$TMP/keep.off" || fail "the input was overwritten"
 finish

@@ -91,4 +91,7 @@ write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- protect "$TMP/crossing.off" --size 1%
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- protect "$TMP/cube.off" --size 1e-7%
+expect 2 "--report $TMP/b.txt: the same file as --balls $TMP/b.txt" -- \
+  protect "$TMP/cube.off" --size 10% --balls "$TMP/b.txt" --report "$TMP/b.txt"
+[[ ! -e "$TMP/b.txt" ]] || fail "--balls and --report naming one file: a file was written"
 finish
