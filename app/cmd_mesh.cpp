@@ -115,7 +115,20 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
   progress.phase("refine");
   refine::Mesher mesher(domain, balls, options);
-  mesher.run();
+  try {
+    mesher.run();
+  } catch (const protect::ProtectionError& e) {
+    // Refinement shrinks protecting balls where the disk condition fails near a curve; shrinking
+    // past protect's safety cap means the complex cannot be meshed at any size, e.g. part.off at
+    // --angle 100, whose 90° creases are then no curves. It ended as an 'internal error', exit 1.
+    char message[640];
+    std::snprintf(message, sizeof message,
+                  "%s: refinement needed protecting balls smaller than the model allows (%s); the surface may fold "
+                  "sharply at edges that are no feature curves at --angle %g (a smaller angle makes them curves), "
+                  "or nearly touch itself",
+                  o.input.c_str(), e.what(), o.angle);
+    throw Failure{kBadInput, message};
+  }
   const double seconds_refine = seconds_since(t_refine);
   phases.emplace_back("refine", seconds_refine);
   const io::SurfaceMesh mesh = mesher.output();

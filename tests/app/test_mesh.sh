@@ -165,6 +165,10 @@ expect 2 "--report $TMP/same.off: the same file as -o $TMP/./same.off" -- \
 [[ ! -e "$TMP/same.off" ]] || fail "a file was written despite -o and --report naming it both"
 expect 2 "-o $TMP/x.off: the same file as --balls $TMP/dir.off/../x.off" -- \
   mesh "$TMP/cube.off" -o "$TMP/x.off" --balls "$TMP/dir.off/../x.off"
+# Refinement that must shrink a ball past protect's cap (the sample part at --angle 100: its 90°
+# creases are then no curves) ended as an 'internal error', exit 1: bad input, named, exit 2.
+expect 2 "refinement needed protecting balls smaller than the model allows" -- \
+  mesh "$(dirname "$0")/../../samples/part.off" --angle 100 --size 1% -o "$TMP/x.off"
 cp "$TMP/cube.off" "$TMP/keep.off"
 expect 2 "-o $TMP/keep.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/keep.off"
 cmp -s "$TMP/cube.off" "$TMP/keep.off" || fail "the input was overwritten"
