@@ -1,8 +1,10 @@
 #include "soup_builder.h"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <delpsc/kernel/predicates.h>
 
@@ -122,11 +124,71 @@ bool SoupBuilder::add_vertex(double x, double y, double z) {
   return true;
 }
 
+namespace {
+
+/// Polygons with more corners than this are always fanned: ear clipping is quadratic or worse.
+constexpr std::size_t kMostCornersClipped = 500;
+
+/// 2D cross product of (b - a) and (c - b): > 0 where the boundary turns left at b.
+double turn(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+}
+
+}  // namespace
+
+// A convex polygon is fanned (v0 vi vi+1). A concave one's fan overlaps itself - a valid L-shaped
+// face starting at its reflex corner was refused as a self-intersecting model - so it is split
+// by ear clipping in its plane (projected along the largest component of its Newell normal),
+// each ear kept in the polygon's order (orientation). Where clipping finds no ear (a polygon
+// that is not simple in projection) the rest is fanned as before.
 void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   ++report_.polygons;
-  const std::uint32_t a = file_to_merged_[indices[0]];
-  for (std::size_t i = 1; i + 1 < indices.size(); ++i)
-    soup_.triangles.push_back({a, file_to_merged_[indices[i]], file_to_merged_[indices[i + 1]]});
+  const std::size_t n = indices.size();
+  std::vector<std::uint32_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = file_to_merged_[indices[i]];
+  const auto fan = [&](const std::vector<std::uint32_t>& corners) {
+    for (std::size_t i = 1; i + 1 < corners.size(); ++i) soup_.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  };
+  if (n <= 3 || n > kMostCornersClipped) return fan(v);
+  const auto& V = soup_.vertices;
+  Vec3 normal = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) normal += V[v[i]].cross(V[v[(i + 1) % n]]);
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::fabs(normal[k]) > std::fabs(normal[axis])) axis = k;
+  // Projected counter-clockwise: the axes after `axis`, swapped when the normal points down it.
+  int u = (axis + 1) % 3, w = (axis + 2) % 3;
+  if (normal[axis] < 0) std::swap(u, w);
+  std::vector<std::array<double, 2>> q(n);
+  for (std::size_t i = 0; i < n; ++i) q[i] = {V[v[i]][u], V[v[i]][w]};
+  bool convex = true;
+  for (std::size_t i = 0; i < n && convex; ++i) convex = turn(q[(i + n - 1) % n], q[i], q[(i + 1) % n]) >= 0;
+  if (convex) return fan(v);
+
+  std::vector<std::size_t> ring(n);  // the corners left, as positions in v and q
+  for (std::size_t i = 0; i < n; ++i) ring[i] = i;
+  const auto inside = [&](const std::array<double, 2>& p, std::size_t a, std::size_t b, std::size_t c) {
+    return turn(q[a], q[b], p) >= 0 && turn(q[b], q[c], p) >= 0 && turn(q[c], q[a], p) >= 0;
+  };
+  for (std::size_t misses = 0, i = 0; ring.size() > 3 && misses < ring.size();) {
+    const std::size_t m = ring.size();
+    const std::size_t a = ring[(i + m - 1) % m], b = ring[i % m], c = ring[(i + 1) % m];
+    bool ear = turn(q[a], q[b], q[c]) > 0;
+    for (std::size_t k = 0; k < m && ear; ++k) {
+      const std::size_t r = ring[k];
+      if (r != a && r != b && r != c && q[r] != q[a] && q[r] != q[b] && q[r] != q[c]) ear = !inside(q[r], a, b, c);
+    }
+    if (!ear) {
+      i = (i + 1) % m, ++misses;
+      continue;
+    }
+    soup_.triangles.push_back({v[a], v[b], v[c]});
+    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i % m));
+    i = (i % m + ring.size() - 1) % ring.size(), misses = 0;  // retry the previous corner
+  }
+  std::vector<std::uint32_t> rest;
+  for (const std::size_t r : ring) rest.push_back(v[r]);
+  fan(rest);
 }
 
 ReadResult SoupBuilder::finish() {

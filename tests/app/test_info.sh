@@ -30,6 +30,17 @@ expect 0 "" -- info "$odd" --report "$TMP/odd.json"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1], encoding="utf-8"))
 sys.exit(not r["input"].endswith("q\"b\\t\tx\ufffd.off"))' "$TMP/odd.json" || fail "info --report, odd name: $(cat "$TMP/odd.json")"
 
+# A concave face (an L whose first corner is the reflex one) is split inside itself, not fanned
+# into overlapping triangles (it was refused as a self-intersecting model); likewise in OBJ.
+printf 'OFF\n6 1 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n0 0 0\n2 0 0\n6 0 1 2 3 4 5\n' >"$TMP/ell.off"
+expect 0 "" -- info "$TMP/ell.off"
+[[ "$(value triangles)" == "4" && "$(value self_intersections)" == "0" ]] \
+  || fail "L-shaped face: triangles=$(value triangles) self_intersections=$(value self_intersections)"
+expect 0 "" -- mesh "$TMP/ell.off" --size 10% -o "$TMP/ell.mesh.off" --check
+[[ "$(value g1)" == "true" ]] || fail "L-shaped face: g1=$(value g1)"
+printf 'v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 6 5 4 3 2 1\n' >"$TMP/ell.obj"
+expect 0 "" -- info "$TMP/ell.obj"
+[[ "$(value self_intersections)" == "0" ]] || fail "L-shaped OBJ face, clockwise: self_intersections=$(value self_intersections)"
 expect 2 "cannot open" -- info "$TMP/none.ply"
 printf 'ply\nformat ascii 1.0\nelement vertex 99999999999\n' >"$TMP/absurd.ply"
 expect 2 "absurd.ply" -- info "$TMP/absurd.ply"
