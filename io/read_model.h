@@ -2,7 +2,8 @@
 // big-endian) into a TriangleSoup, with input validation good enough to face files from anywhere.
 //
 // Every reader
-//  - fan-triangulates polygons (v0 vi vi+1), keeping the file's vertex order (orientation);
+//  - fan-triangulates convex polygons (v0 vi vi+1) and ear-clips concave ones in their plane,
+//    keeping the file's vertex order (orientation);
 //  - merges exactly duplicated vertices (equal x, y and z as doubles; -0 equals +0) through a hash
 //    on the coordinates, keeping the first occurrence: STL lists every triangle's corners
 //    separately and needs it, the indexed formats get it too so that no format reaches the complex

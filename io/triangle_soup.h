@@ -1,5 +1,5 @@
 // A polygon model as read from a file: vertices and triangles, nothing more. Readers produce it
-// (polygons fan-triangulated, exactly duplicated vertices merged); protect::build_complex turns
+// (polygons split into triangles, exactly duplicated vertices merged); protect::build_complex turns
 // it into the piecewise smooth complex.
 #pragma once
 
