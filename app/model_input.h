@@ -4,6 +4,7 @@
 
 #include <delpsc/io/error.h>
 #include <delpsc/io/read_model.h>
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/self_intersections.h>
 #include <cstdio>
@@ -49,13 +50,37 @@ inline protect::Complex load_complex(const io::ReadResult& model, const std::str
 /// At most this many self-intersecting pairs are looked for (info reports ">= this" as this).
 inline constexpr std::size_t kSelfIntersectionsCounted = 100;
 
+/// Closer than this fraction of the bounding-box diagonal, a vertex and a triangle not incident to
+/// it count as touching (protect's smallest ball is 1e-10 of the diagonal).
+inline constexpr double kNearContactFraction = 1e-9;
+
+/// A bad-input exit when a vertex comes within kNearContactFraction of the diagonal of a triangle
+/// it is no corner of (protect::find_near_contact): refinement would have to sample at that
+/// scale, and ran for minutes towards the vertex cap on a tetrahedron 1e-15 thick.
+inline void reject_near_contact(const protect::Complex& complex, const std::string& path) {
+  kernel::Box3 box;
+  for (const Vec3& p : complex.vertices) box.extend(p);
+  const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
+  const auto pair = protect::find_near_contact(complex, tolerance);
+  if (!pair) return;
+  const Vec3& p = complex.vertices[(*pair)[0]];
+  char message[512];
+  std::snprintf(message, sizeof message,
+                "%s: the model nearly touches itself: vertex %u (%.9g, %.9g, %.9g) lies within %.3g (%g of the "
+                "diagonal) of triangle %u, not one of its own (counted after splitting polygons); DelPSC would have "
+                "to sample the surface at that scale - weld or separate them",
+                path.c_str(), (*pair)[0], p.x(), p.y(), p.z(), tolerance, kNearContactFraction,
+                complex.triangle_source[(*pair)[1]]);
+  throw Failure{kBadInput, message};
+}
+
 /// A bad-input exit when two triangles of the complex cross or overlap other than along a shared
 /// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
 /// it hit a cap or ran out of memory. The message names the first pair and where it is.
 inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
   const auto pairs = protect::find_self_intersections(complex, kSelfIntersectionsCounted);
-  if (pairs.empty()) return;
+  if (pairs.empty()) return reject_near_contact(complex, path);
   const auto [s, t] = pairs.front();
   Vec3 c = Vec3::Zero();
   for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;

@@ -88,4 +88,32 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
   return pairs;
 }
 
+std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, double tolerance) {
+  if (complex.triangles.empty() || !(tolerance > 0)) return std::nullopt;
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  std::vector<bool> used(complex.vertices.size(), false);
+  for (const auto& t : complex.triangles)
+    for (const std::uint32_t v : t) used[v] = true;
+  std::vector<std::uint32_t> candidates;
+  const Vec3 margin = Vec3::Constant(tolerance);
+  for (std::uint32_t v = 0; v < complex.vertices.size(); ++v) {
+    if (!used[v]) continue;
+    const Vec3& p = complex.vertices[v];
+    kernel::Box3 box;
+    box.extend(p - margin);
+    box.extend(p + margin);
+    candidates.clear();
+    tree.triangles_in_box(box, candidates);
+    for (const std::uint32_t c : candidates) {
+      const auto& t = complex.triangles[c];
+      if (t[0] == v || t[1] == v || t[2] == v) continue;
+      const Vec3 q = kernel::closest_point_on_triangle(p, complex.vertices[t[0]], complex.vertices[t[1]],
+                                                       complex.vertices[t[2]]).point;
+      const double d2 = (p - q).squaredNorm();
+      if (d2 > 0 && d2 < tolerance * tolerance) return std::array<std::uint32_t, 2>{v, c};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace delpsc::protect

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <delpsc/kernel/point.h>
@@ -32,5 +33,13 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
 /// and K box-overlapping pairs (about 15 per triangle on a clean mesh); O(T) memory.
 std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex,
                                                                   std::size_t max_pairs = 100);
+
+/// A vertex of `complex` (one some triangle uses) and a triangle not incident to it at a distance
+/// below `tolerance` but not 0 (touching is a self-intersection above), or nullopt: a surface
+/// that comes that close to itself has a feature that small, which refinement resolves only by
+/// sampling at that scale (a tetrahedron 1e-15 thick refined for minutes towards the vertex
+/// cap). The first such pair by vertex. Distances in floating point (closest_point_on_triangle);
+/// the AABB tree finds the triangles within `tolerance` of each vertex.
+std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, double tolerance);
 
 }  // namespace delpsc::protect

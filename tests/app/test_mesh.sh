@@ -150,6 +150,10 @@ expect 2 "unknown output format" -- mesh "$TMP/cube.off" -o "$TMP/x.xyz"
 expect 2 "" -- mesh "$TMP/cube.off"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
+# A tetrahedron 1e-15 thick: its apex nearly touches the opposite face (refinement ran for minutes
+# towards the vertex cap); refused like a crossing, naming the vertex.
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 1e-15\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$TMP/flat.off"
+expect 2 "the model nearly touches itself: vertex 3 (0.3, 0.3, 1e-15)" -- mesh "$TMP/flat.off" -o "$TMP/x.off"
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
 expect 2 "is below 1/10000 of --size" -- mesh "$TMP/cube.off" --size 10% --facet-distance 1e-12 -o "$TMP/x.off"
