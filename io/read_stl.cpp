@@ -40,7 +40,17 @@ void parse_binary(std::string_view bytes, SoupBuilder& out) {
   if (bytes.size() < kHeaderBytes)
     out.fail(at_byte(bytes.size()), "truncated: a binary STL starts with an 84-byte header, the file has " +
                                         std::to_string(bytes.size()) + " bytes");
-  const std::uint64_t n = load<std::uint32_t>(bytes.data() + 80, std::endian::little);
+  std::uint64_t n = load<std::uint32_t>(bytes.data() + 80, std::endian::little);
+  // Some exporters leave the count at 0 or stale: more whole records than announced, and nothing
+  // else, are all read (a file with a zero count was an 'empty model', one with a low count lost
+  // its last triangles behind a warning that -q hid).
+  const std::uint64_t records = (bytes.size() - kHeaderBytes) / kFacetBytes;
+  if (records > n && (bytes.size() - kHeaderBytes) % kFacetBytes == 0) {
+    out.report().warnings.push_back("the header announces " + std::to_string(n) + " triangles but the file holds " +
+                                    std::to_string(records) + " whole records: all " + std::to_string(records) +
+                                    " read");
+    n = records;
+  }
   // Three file vertices per facet are indexed with uint32.
   out.check_count(n, kFacetBytes, bytes.size() - kHeaderBytes, kMaxVertices / 3, "triangles",
                   at_byte(80));

@@ -41,6 +41,22 @@ expect 0 "" -- mesh "$TMP/ell.off" --size 10% -o "$TMP/ell.mesh.off" --check
 printf 'v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 6 5 4 3 2 1\n' >"$TMP/ell.obj"
 expect 0 "" -- info "$TMP/ell.obj"
 [[ "$(value self_intersections)" == "0" ]] || fail "L-shaped OBJ face, clockwise: self_intersections=$(value self_intersections)"
+# A binary STL whose header count is 0 (some exporters) or too low: every whole record is read,
+# with a warning (0 was an 'empty model'; a low count dropped triangles).
+python3 - "$TMP" <<'PY'
+import struct, sys
+tris = [((0, 0, 0), (0, 1, 0), (1, 0, 0)), ((0, 0, 0), (1, 0, 0), (0, 0, 1)),
+        ((1, 0, 0), (0, 1, 0), (0, 0, 1)), ((0, 0, 0), (0, 0, 1), (0, 1, 0))]
+for name, count in [("zero", 0), ("low", 2)]:
+    with open(f"{sys.argv[1]}/{name}.stl", "wb") as f:
+        f.write(b"binary".ljust(80) + struct.pack("<I", count))
+        for t in tris:
+            f.write(struct.pack("<12f", 0, 0, 0, *(c for v in t for c in v)) + b"\0\0")
+PY
+expect 0 "the header announces 0 triangles but the file holds 4 whole records" -- info "$TMP/zero.stl"
+[[ "$(value triangles)" == "4" ]] || fail "zero-count STL: triangles=$(value triangles)"
+expect 0 "the header announces 2 triangles" -- info "$TMP/low.stl"
+[[ "$(value triangles)" == "4" ]] || fail "low-count STL: triangles=$(value triangles)"
 expect 2 "cannot open" -- info "$TMP/none.ply"
 printf 'ply\nformat ascii 1.0\nelement vertex 99999999999\n' >"$TMP/absurd.ply"
 expect 2 "absurd.ply" -- info "$TMP/absurd.ply"
