@@ -40,7 +40,8 @@ inline void check_preview_path(const std::string& path) {
 /// them - name the same file: `-o x.off --report x.off` wrote the mesh and then the JSON report
 /// over it, and `-o model.off` on model.off replaced the input. The message starts with the
 /// option that comes first in `files` (main lists --report first, so that a refused report is
-/// not written). Paths are compared after resolving symbolic links and "..", where they exist.
+/// not written). Paths are compared after resolving symbolic links and "..", where they exist,
+/// and existing files by identity (hard links).
 inline void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& files) {
   namespace fs = std::filesystem;
   const auto resolved = [](const std::string& path) {
@@ -50,7 +51,8 @@ inline void check_distinct_files(const std::vector<std::pair<std::string, std::s
   };
   for (std::size_t i = 0; i < files.size(); ++i)
     for (std::size_t j = i + 1; j < files.size(); ++j)
-      if (resolved(files[i].second) == resolved(files[j].second))
+      if (std::error_code ec; resolved(files[i].second) == resolved(files[j].second) ||
+                              fs::equivalent(files[i].second, files[j].second, ec))  // hard links too
         throw Failure{kBadInput, files[i].first + " " + files[i].second + ": the same file as " + files[j].first + " " +
                                      files[j].second + "; give each a name of its own"};
 }

@@ -175,5 +175,7 @@ expect 2 "refinement needed protecting balls smaller than the model allows" -- \
   mesh "$(dirname "$0")/../../samples/part.off" --angle 100 --size 1% -o "$TMP/x.off"
 cp "$TMP/cube.off" "$TMP/keep.off"
 expect 2 "-o $TMP/keep.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/keep.off"
+ln "$TMP/keep.off" "$TMP/hard.off"
+expect 2 "-o $TMP/hard.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/hard.off"
 cmp -s "$TMP/cube.off" "$TMP/keep.off" || fail "the input was overwritten"
 finish
