@@ -103,7 +103,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   phases.emplace_back("protect", seconds_protect);
 
   const auto t_refine = Clock::now();
-  refine::ProtectedBalls balls(*ball_set);
+  refine::ProtectedBalls balls(*ball_set, refine::refinement_ball_options(lambda, (box.hi - box.lo).norm()));
   refine::MesherOptions options;
   options.facet_size = lambda;
   if (!o.facet_distance.empty()) {

@@ -27,7 +27,7 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = size_fraction * (box.hi - box.lo).norm();
   protect::BallSet set = protect::protect(domain.complex(), lambda);
-  refine::ProtectedBalls balls(set);
+  refine::ProtectedBalls balls(set, refine::refinement_ball_options(lambda, (box.hi - box.lo).norm()));  // as delpsc mesh
   refine::MesherOptions options;
   options.facet_size = lambda;
   options.max_vertices = max_vertices;
