@@ -23,9 +23,9 @@
 #include "command.h"
 #include "mesh_report.h"
 #include "model_input.h"
-#include "size_limits.h"
 #include "output_paths.h"
 #include "progress.h"
+#include "size_limits.h"
 #include "size_option.h"
 
 namespace delpsc::app {

@@ -57,11 +57,11 @@ inline constexpr double kNearContactFraction = 1e-9;
 /// A bad-input exit when a vertex comes within kNearContactFraction of the diagonal of a triangle
 /// it is no corner of (protect::find_near_contact): refinement would have to sample at that
 /// scale, and ran for minutes towards the vertex cap on a tetrahedron 1e-15 thick.
-inline void reject_near_contact(const protect::Complex& complex, const std::string& path) {
+inline void reject_near_contact(const protect::Complex& complex, const kernel::AabbTree& tree, const std::string& path) {
   kernel::Box3 box;
   for (const Vec3& p : complex.vertices) box.extend(p);
   const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
-  const auto pair = protect::find_near_contact(complex, tolerance);
+  const auto pair = protect::find_near_contact(complex, tree, tolerance);
   if (!pair) return;
   const Vec3& p = complex.vertices[(*pair)[0]];
   char message[512];
@@ -79,8 +79,9 @@ inline void reject_near_contact(const protect::Complex& complex, const std::stri
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
 /// it hit a cap or ran out of memory. The message names the first pair and where it is.
 inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
-  const auto pairs = protect::find_self_intersections(complex, kSelfIntersectionsCounted);
-  if (pairs.empty()) return reject_near_contact(complex, path);
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);  // one tree for both checks
+  const auto pairs = protect::find_self_intersections(complex, tree, kSelfIntersectionsCounted);
+  if (pairs.empty()) return reject_near_contact(complex, tree, path);
   const auto [s, t] = pairs.front();
   Vec3 c = Vec3::Zero();
   for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;

@@ -8,6 +8,7 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
+#include <delpsc/protect/self_intersections.h>
 #include <delpsc/refine/polygon_domain.h>
 
 using namespace delpsc;
@@ -46,6 +47,23 @@ void BM_BuildAabbTree(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(soup.triangles.size());
 }
 BENCHMARK(BM_BuildAabbTree)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// The input checks every command that meshes runs (protect/self_intersections.h) on a clean
+// surface, where nothing is found and every box-overlapping pair is decided: the tree, then the
+// exact pair tests, then the near-contact search. Against BM_BuildComplexTorus: what the checks
+// add to reading a model.
+void BM_InputChecksTorus(benchmark::State& state) {
+  const auto nu = static_cast<int>(state.range(0));
+  const protect::Complex complex = protect::build_complex(torus_soup(nu, nu / 2));
+  for (auto _ : state) {
+    const kernel::AabbTree tree(complex.vertices, complex.triangles);
+    benchmark::DoNotOptimize(protect::find_self_intersections(complex, tree, 100));
+    benchmark::DoNotOptimize(protect::find_near_contact(complex, tree, 1e-9 * 2.6));
+  }
+  state.counters["triangles"] = static_cast<double>(complex.triangles.size());
+  state.counters["tri/s"] = benchmark::Counter(static_cast<double>(complex.triangles.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_InputChecksTorus)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 // Segments of length `len` (relative to the torus's tube radius 0.3) centred on random points of
 // random triangles, in random directions: the shape of Voronoi edges dual to restricted

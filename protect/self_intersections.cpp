@@ -63,9 +63,13 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
 }
 
 std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex, std::size_t max_pairs) {
+  return find_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), max_pairs);
+}
+
+std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex, const kernel::AabbTree& tree,
+                                                                  std::size_t max_pairs) {
   std::vector<std::array<std::uint32_t, 2>> pairs;
   if (complex.triangles.empty() || max_pairs == 0) return pairs;
-  const kernel::AabbTree tree(complex.vertices, complex.triangles);
   const auto corners = [&](std::uint32_t t) {
     const auto& tri = complex.triangles[t];
     return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
@@ -89,8 +93,12 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
 }
 
 std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, double tolerance) {
+  return find_near_contact(complex, kernel::AabbTree(complex.vertices, complex.triangles), tolerance);
+}
+
+std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, const kernel::AabbTree& tree,
+                                                               double tolerance) {
   if (complex.triangles.empty() || !(tolerance > 0)) return std::nullopt;
-  const kernel::AabbTree tree(complex.vertices, complex.triangles);
   std::vector<bool> used(complex.vertices.size(), false);
   for (const auto& t : complex.triangles)
     for (const std::uint32_t v : t) used[v] = true;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/point.h>
 #include <delpsc/protect/complex.h>
 
@@ -33,6 +34,10 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
 /// and K box-overlapping pairs (about 15 per triangle on a clean mesh); O(T) memory.
 std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex,
                                                                   std::size_t max_pairs = 100);
+/// The same with `tree` an AabbTree over complex.vertices and complex.triangles, built once by a
+/// caller that runs both checks of this file.
+std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex, const kernel::AabbTree& tree,
+                                                                  std::size_t max_pairs);
 
 /// A vertex of `complex` (one some triangle uses) and a triangle not incident to it at a distance
 /// below `tolerance` but not 0 (touching is a self-intersection above), or nullopt: a surface
@@ -41,5 +46,8 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
 /// cap). The first such pair by vertex. Distances in floating point (closest_point_on_triangle);
 /// the AABB tree finds the triangles within `tolerance` of each vertex.
 std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, double tolerance);
+/// The same with a tree built by the caller, as for find_self_intersections.
+std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, const kernel::AabbTree& tree,
+                                                               double tolerance);
 
 }  // namespace delpsc::protect
