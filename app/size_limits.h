@@ -5,7 +5,8 @@
 //    at least (total curve length) / 2λ balls; more than protect's max_balls cannot succeed.
 //  - Refinement (§3): with facet_size λ alone the output has 0.66 A / λ² vertices for surface
 //    area A on every libcgal-demo model (fandisk, part, anchor, joint, elephant at 0.5%); about
-//    1.4 KB of memory per vertex while meshing (joint at 0.25%: 237,000 vertices, 326 MB).
+//    1.5 KB of memory per vertex while meshing (joint at 0.25%: 237,452 vertices, 354 MB peak RSS;
+//    BENCHMARKS.md, "Input checks and memory of delpsc mesh").
 #pragma once
 
 #include <algorithm>
@@ -28,7 +29,7 @@ inline double expected_vertices(const protect::Complex& complex, double lambda) 
   return 0.66 * area / (lambda * lambda);
 }
 
-/// Refused without an explicit --max-vertices: about 14 GB while meshing.
+/// Refused without an explicit --max-vertices: about 15 GB while meshing.
 inline constexpr double kMostExpectedVertices = 1e7;
 
 /// The cap on vertices when --max-vertices is not given: 50 times the expected count, at least
@@ -60,7 +61,7 @@ inline void reject_size_for_vertices(double expected, const std::string& size_te
   std::snprintf(message, sizeof message,
                 "--size %s is too small for this model: about %.3g vertices (%.3g GB of memory while meshing); "
                 "choose a larger size, or give --max-vertices to try anyway",
-                size_text.c_str(), expected, expected * 1.4e-6);
+                size_text.c_str(), expected, expected * 1.5e-6);
   throw Failure{kBadInput, message};
 }
 
