@@ -124,9 +124,9 @@ void Mesher::recheck(PointId p) {
   if (v.failure == DiskFailure::d3 || v.failure == DiskFailure::d4) failing_d34_.insert(p);
 }
 
-void Mesher::apply(const delaunay::ChangeSet& changes, bool insertion) {
+void Mesher::apply(const delaunay::ChangeSet& changes, PointId inserted) {
   touched_.clear();
-  facets_.update(changes, touched_, insertion);
+  facets_.update(changes, touched_, inserted);
   for (const PointId p : changes.hidden) touched_.push_back(p);
   for (const PointId p : changes.revealed) touched_.push_back(p);
   std::sort(touched_.begin(), touched_.end());
@@ -174,7 +174,7 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     facets_.discard(slot);
     return true;
   }
-  apply(changes_, true);
+  apply(changes_, id);
   recheck(id);  // the facets' update names only vertices whose umbrellas changed
   return true;
 }
@@ -215,7 +215,7 @@ PointId Mesher::insert_ball(BallKey key) {
   std::vector<PointId> swallowed;
   for (const PointId h : changes_.hidden)
     if (places_[h].kind == VertexPlace::Kind::surface) swallowed.push_back(h);
-  apply(changes_, true);
+  apply(changes_, id);
   recheck(id);  // the facets' update names only vertices whose umbrellas changed
   for (const PointId h : swallowed) remove_point(h);
   return id;
@@ -225,7 +225,7 @@ void Mesher::remove_point(PointId p) {
   if (dt_.status(p) == PointStatus::removed) return;
   std::string error;
   if (!dt_.remove(p, &changes_, &error)) throw std::logic_error("Mesher: removal failed: " + error);
-  apply(changes_, false);
+  apply(changes_, delaunay::kNoPoint);
   recheck(p);
 }
 

@@ -113,7 +113,8 @@ class Mesher {
  private:
   void initialise();
   void seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const;
-  void apply(const delaunay::ChangeSet& changes, bool insertion);  // facets, then re-check touched vertices
+  // Facets, then re-check touched vertices; `inserted`: the point inserted, kNoPoint after a removal.
+  void apply(const delaunay::ChangeSet& changes, PointId inserted);
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId hint) const;  // a gross error

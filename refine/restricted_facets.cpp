@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <delpsc/kernel/constructions.h>
+#include <delpsc/kernel/predicates.h>
 
 namespace delpsc::refine {
 
@@ -27,6 +28,7 @@ std::uint32_t RestrictedFacets::new_record() {
   records_[s].alive = true;
   records_[s].next = kNoFacet;
   records_[s].discarded = false;
+  records_[s].kept = 0;
   ++live_;
   return s;
 }
@@ -40,20 +42,25 @@ void RestrictedFacets::forget(FacetRef& ref) {
 
 void RestrictedFacets::forget_chain(std::uint32_t first) {
   for (std::uint32_t s = first; s != kNoFacet;) {
-    RestrictedFacet& r = records_[s];
-    gone_.push_back({r.vertices[0], r.vertices[1], r.vertices[2], r.patch});
-    for (const PointId v : r.vertices) {
-      auto& list = by_vertex_[v];
-      const auto pos = std::find_if(list.begin(), list.end(), [s](const Incidence& x) { return x.slot == s; });
-      *pos = list.back();
-      list.pop_back();
-    }
-    r.alive = false;
-    ++r.stamp;  // invalidates heap entries
-    free_.push_back(s);
-    --live_;
-    s = r.next;
+    const std::uint32_t next = records_[s].next;
+    forget_record(s);
+    s = next;
   }
+}
+
+void RestrictedFacets::forget_record(std::uint32_t s) {
+  RestrictedFacet& r = records_[s];
+  gone_.push_back({r.vertices[0], r.vertices[1], r.vertices[2], r.patch});
+  for (const PointId v : r.vertices) {
+    auto& list = by_vertex_[v];
+    const auto pos = std::find_if(list.begin(), list.end(), [s](const Incidence& x) { return x.slot == s; });
+    *pos = list.back();
+    list.pop_back();
+  }
+  r.alive = false;
+  ++r.stamp;  // invalidates heap entries
+  free_.push_back(s);
+  --live_;
 }
 
 // V_t lies on the line of points power-equidistant from t's three vertices: through t's own
@@ -118,6 +125,7 @@ void RestrictedFacets::examine(Facet f) {
     return;
   }
   std::array<WeightedPoint, 3> p{dt_->point(v[0]), dt_->point(v[1]), dt_->point(v[2])};
+  const bool trusted = !e.is_ray && well_conditioned(f);
   // Hits come sorted by t then patch; group them per patch (few hits: quadratic is fine).
   std::uint32_t first = kNoFacet, last = kNoFacet;
   for (std::size_t i = 0; i < hits_.size(); ++i) {
@@ -127,8 +135,10 @@ void RestrictedFacets::examine(Facet f) {
     if (seen) continue;
     double best = -HUGE_VAL;
     Vec3 best_point = hits_[i].point;
+    int crossings = 0;
     for (std::size_t j = i; j < hits_.size(); ++j) {
       if (hits_[j].patch != patch) continue;
+      crossings += hits_[j].coplanar ? 2 : 1;  // a coplanar run's ends move with the segment's
       // On V_t the three power distances agree up to rounding; take the largest.
       for (const auto& w : p) {
         const double d = (hits_[j].point - w.point()).squaredNorm() - w.w;
@@ -145,6 +155,7 @@ void RestrictedFacets::examine(Facet f) {
     r.point = best_point;
     r.power = best;
     r.size = std::sqrt(std::max(0.0, best));
+    r.carriable = trusted && crossings == 1;
     if (last == kNoFacet)
       first = s;
     else
@@ -204,14 +215,51 @@ void RestrictedFacets::rebuild(std::vector<PointId>& touched) {
   touch_changed(touched);
 }
 
-void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, bool insertion) {
+std::optional<std::uint32_t> RestrictedFacets::carry_over(std::uint32_t first, PointId inserted) {
+  for (std::uint32_t s = first; s != kNoFacet; s = records_[s].next)
+    if (!records_[s].carriable || records_[s].discarded) return std::nullopt;
+  const double* p = dt_->point(inserted).data();
+  std::uint32_t head = kNoFacet, last = kNoFacet;
+  for (std::uint32_t s = first; s != kNoFacet;) {
+    RestrictedFacet& r = records_[s];
+    const std::uint32_t next = r.next;
+    const double x[3] = {r.point.x(), r.point.y(), r.point.z()};
+    // Exact: x stays on the shrunk V_t iff it is not strictly power-closer to the new point.
+    if (kernel::compare_power_distance(x, dt_->point(r.vertices[0]).data(), p) > 0) {
+      forget_record(s);
+    } else {
+      r.kept = update_epoch_;
+      r.next = kNoFacet;
+      if (last == kNoFacet)
+        head = s;
+      else
+        records_[last].next = s;
+      last = s;
+    }
+    s = next;
+  }
+  return head;
+}
+
+void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted) {
+  const bool insertion = inserted != delaunay::kNoPoint;
   if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
   if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
-  // Destroyed first: their slots may have been recycled by created cells, and still hold the old
-  // references.
-  for (const CellId c : changes.destroyed)
-    for (int i = 0; i < 4; ++i) forget(ref(c, i));
   ++update_epoch_;
+  // Destroyed first: their slots may have been recycled by created cells, and still hold the old
+  // references. After an insertion the records are only set aside here, since a facet on the
+  // cavity's boundary may carry its records over (below); the rest are forgotten at the end.
+  doomed_.clear();
+  for (const CellId c : changes.destroyed)
+    for (int i = 0; i < 4; ++i) {
+      FacetRef& r = ref(c, i);
+      if (insertion) {
+        if (r.slot != kNoFacet) doomed_.push_back(r);
+        r = {};
+      } else {
+        forget(r);
+      }
+    }
   for (const CellId c : changes.created)
     if (dt_->is_cell_alive(c)) created_mark_[c] = update_epoch_;
   for (const CellId c : changes.created) {
@@ -227,17 +275,25 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       // A facet on the boundary of an insertion's cavity (its other cell n survives) keeps the
       // part of its old dual edge that stays power-closer to t than to the new point: inserting
       // a point only carves its cell out of the others, V_t(new) = V_t(old) ∩ {x : π(x, t) <=
-      // π(x, p)} (§1.2's power diagram; a hidden point's cell was empty already). So if the old
+      // π(x, p)} (§1.2's power diagram; a hidden point's cell was empty already). So the new
+      // dual meets exactly the old crossings on that side, and no query is needed: if the old
       // dual met no patch - n's side of the facet holds no record, not even a stale one - the
-      // new one meets none either, and the query is spared: ~40% of a cavity's facets are such
-      // boundary facets and most of them lie off the surface. The old outcome must have been
-      // computed well-conditioned (see well_conditioned), else it is recomputed.
+      // new one meets none either (~40% of a cavity's facets are such boundary facets, most of
+      // them off the surface); if it crossed each patch once, each record stays or goes by one
+      // exact comparison (carry_over). The old outcome must have been computed well-conditioned
+      // (see well_conditioned), else it is recomputed.
       if (insertion && created_mark_[n] != update_epoch_) {
         const Facet old = inf == i ? f : m;  // the surviving cell's side
-        const FacetRef r = ref(old.cell, old.index);
+        FacetRef& r = ref(old.cell, old.index);
         if (r.slot == kNoFacet && r.stamp != kUntrusted) {
           ref(c, i) = {};
           continue;
+        }
+        if (r.slot != kNoFacet && records_[r.slot].alive && records_[r.slot].stamp == r.stamp) {
+          if (const auto head = carry_over(r.slot, inserted)) {
+            r = ref(c, i) = *head == kNoFacet ? FacetRef{} : FacetRef{*head, records_[*head].stamp};
+            continue;
+          }
         }
       }
       // Any record still reachable from either side is stale (its dual edge changed).
@@ -246,6 +302,8 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       examine(f);
     }
   }
+  for (FacetRef& r : doomed_)
+    if (r.slot == kNoFacet || records_[r.slot].kept != update_epoch_) forget(r);
   touch_changed(touched);
 }
 

@@ -10,7 +10,10 @@
 // destroyed cell, and if it survives it is a facet of a created cell (the cell that replaced the
 // lost one). Records hang off the cell facets (both sides of each facet); a destroyed cell's slot
 // still holds its references when update() runs, even if a created cell reuses the slot, because
-// the destroyed cells are processed first.
+// the destroyed cells are processed first. After an insertion a facet on the cavity's boundary
+// is not queried again when its old outcome still decides the new one (its dual edge only
+// shrank): none if the old dual met nothing, else each single crossing kept or dropped by one
+// exact power comparison with the new point (update(), carry_over()).
 //
 // The largest size is served by a max-heap with lazy deletion, made on first use: an entry is
 // valid while its record's stamp is unchanged. Per vertex, the list of records incident to it (its umbrellas,
@@ -25,6 +28,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <span>
 #include <tuple>
@@ -51,6 +55,10 @@ struct RestrictedFacet {
   std::uint32_t next = kNoFacet;      ///< next record of the same triangle (other patches)
   bool alive = false;
   bool discarded = false;             ///< skipped by largest() (see discard)
+  /// The dual edge met σ exactly once, crossing it (not running inside it), and was computed from
+  /// cells far from flat: update() may then carry the record over to a shrunk dual edge.
+  bool carriable = false;
+  std::uint32_t kept = 0;             ///< the update that last carried it over
 };
 
 /// A live record as seen from one of its vertices v: its slot, its patch and the edge of t
@@ -73,8 +81,9 @@ class RestrictedFacets {
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
   /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
-  /// `insertion`: the changes come from inserting one point (cells only shrink, see update()).
-  void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, bool insertion);
+  /// `inserted`: the point whose insertion made the changes (cells only shrink, see update()), or
+  /// delaunay::kNoPoint when they come from a removal.
+  void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted);
 
   std::size_t size() const { return live_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
@@ -112,6 +121,12 @@ class RestrictedFacets {
 
   void forget(FacetRef& ref);
   void forget_chain(std::uint32_t first);
+  void forget_record(std::uint32_t s);
+  /// Carries the records of a cavity-boundary facet over to its shrunk dual edge (see update()):
+  /// keeps those whose point is not power-closer to `inserted` than to t, forgets the others.
+  /// Returns the new first record (kNoFacet: none left), or nullopt when some record is not
+  /// carriable and the facet must be examined afresh.
+  std::optional<std::uint32_t> carry_over(std::uint32_t first, PointId inserted);
   /// Appends to `touched` the vertices of the (triangle, patch) pairs in gone_ or made_ but not
   /// both, and empties them.
   void touch_changed(std::vector<PointId>& touched);
@@ -136,6 +151,7 @@ class RestrictedFacets {
   // still hold the old references when update() runs, so no lookup by vertices is ever needed.
   std::vector<FacetRef> facet_refs_;
   std::vector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
+  std::vector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
   std::uint32_t update_epoch_ = 0;
   std::vector<SurfaceHit> hits_;               // scratch
   std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made

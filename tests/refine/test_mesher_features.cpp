@@ -103,10 +103,14 @@ TEST_CASE("the paper's global choice in step 2(a)") {
 }
 
 TEST_CASE("local step 2(a) refines balls where they are too large") {
-  CHECK(mesh_model(io::make_book(3, 4), 0.02).stats.ball_refinements > 0);
+  // Whether a ball must be refined depends on the refinement's path: on the 3-page book at 4% the
+  // local rule picks RefineBall twice (its ball is larger than the facet it would refine). At 2%
+  // it did once until cavity-boundary facets carried their records over instead of being
+  // queried again (the hit points then differ by rounding and the path changes).
+  CHECK(mesh_model(io::make_book(3, 4), 0.04).stats.ball_refinements > 0);
 }
 
-TEST_CASE("book of three sheets (non-manifold spine)") { mesh_model(io::make_book(3, 4), 0.04); }
+TEST_CASE("book of three sheets (non-manifold spine)") { mesh_model(io::make_book(3, 4), 0.02); }
 TEST_CASE("box with a fin (slit)") { mesh_model(io::make_box_with_fin(4), 0.04); }
 // Planar patches that are not axis-aligned: rounded coordinates make nearly flat cells and points
 // rejected off their dual edge; the rotated book at 2% looped forever re-offering a discarded
