@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "link_shape.h"
+
 namespace delpsc::refine {
 
 const char* to_string(DiskFailure f) {
@@ -79,9 +81,6 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   // five allocations per call showed in profiles (malloc/free ~3% of meshing).
   thread_local std::vector<std::array<PointId, 2>> link;
   thread_local std::vector<std::uint32_t> link_facet;
-  thread_local std::vector<PointId> verts;
-  thread_local std::vector<int> degree;
-  thread_local std::vector<std::size_t> parent;
   for (const auto& [sigma, interior] : patches) {
     link.clear();
     link_facet.clear();
@@ -91,39 +90,10 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
       link_facet.push_back(x.slot);
     }
     if (link.empty()) return {DiskFailure::d1, sigma, kNoFacet};
-    // The link graph: its vertices sorted, degrees, and connectivity by union-find, so that a
-    // vertex with a large umbrella (a big ball next to many small ones) costs O(k log k), not
-    // O(k^2): it is re-checked after every insertion nearby.
-    verts.clear();
-    for (const auto& e : link) verts.insert(verts.end(), e.begin(), e.end());
-    std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-    auto index = [&](PointId v) {
-      return static_cast<std::size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
-    };
-    degree.assign(verts.size(), 0);
-    parent.resize(verts.size());
-    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-    auto root = [&](std::size_t i) {
-      while (parent[i] != i) i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    std::size_t components = verts.size();
-    for (const auto& e : link) {
-      const std::size_t a = index(e[0]), b = index(e[1]);
-      ++degree[a];
-      ++degree[b];
-      const std::size_t ra = root(a), rb = root(b);
-      if (ra != rb) {
-        parent[ra] = rb;
-        --components;
-      }
-    }
-    if (std::any_of(degree.begin(), degree.end(), [](int d) { return d > 2; }))
-      return {DiskFailure::d1, sigma, kNoFacet};
-    if (components != 1) return {DiskFailure::d1, sigma, kNoFacet};
+    const LinkShape shape = link_shape(link);
+    if (!shape.simple) return {DiskFailure::d1, sigma, kNoFacet};
     // Connected with degrees <= 2: a cycle when E == V, a path when E == V - 1.
-    const bool cycle = link.size() == verts.size();
+    const bool cycle = link.size() == shape.vertices;
     if (cycle != interior) return {DiskFailure::d2, sigma, kNoFacet};
     if (late.failure != DiskFailure::none) continue;
     for (std::size_t i = 0; i < link.size() && late.failure == DiskFailure::none; ++i) {
