@@ -236,7 +236,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     if (s.stopped_at_max_vertices && !o.max_vertices)
       std::fprintf(stderr,
                    "delpsc: %zu vertices is the automatic cap for this model at --size %s (50 times what the size "
-                   "alone needs, within [2e6, 2e7]): a thin feature or a crossing of the model may stop refinement from ending; "
+                   "alone needs, within [2e6, 2e7] and what 80%% of this machine's memory holds): a thin feature or a crossing of the model may stop refinement from ending; "
                    "--max-vertices N raises the cap, --max-vertices 0 removes it\n",
                    options.max_vertices, o.size.c_str());
     list_failing(mesher, g);
@@ -271,8 +271,9 @@ Runner register_mesh(CLI::App& app) {
       ->check(CLI::Range(0.0, refine::kMaxFacetAngleDegrees));
   app.add_option("--max-vertices", o->max_vertices,
                  "Stop refining at this many vertices; the mesh reached is still written, exit code 1 (default: 50 times "
-                 "the vertices the size alone needs, within two and twenty million; a size needing more than ten "
-                 "million is refused unless this is given; 0: no limit)");
+                 "the vertices the size alone needs, within two and twenty million and what 80% of memory holds at "
+                 "1.8 KB each; a size needing more than ten million, or more than memory holds, is refused unless "
+                 "this is given; 0: no limit)");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "command.h"
+#include "size_limits.h"
 
 namespace delpsc::app {
 
@@ -27,8 +28,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 std::vector<WeightedPoint> load(const TriangulateOptions& o) {
   try {
-    if (!o.generate.empty()) return io::generate_points(o.generate, o.seed);
-    return io::read_point_set(o.input);
+    if (!o.generate.empty()) {
+      reject_points_beyond_memory(io::parse_generator(o.generate).count);  // before making them
+      return io::generate_points(o.generate, o.seed);
+    }
+    std::vector<WeightedPoint> points = io::read_point_set(o.input);
+    reject_points_beyond_memory(points.size());
+    return points;
   } catch (const io::Error& e) {
     throw Failure{kBadInput, e.what()};
   } catch (const std::invalid_argument& e) {

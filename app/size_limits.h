@@ -9,6 +9,8 @@
 //    BENCHMARKS.md, "Input checks and memory of delpsc mesh").
 #pragma once
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -29,13 +31,30 @@ inline double expected_vertices(const protect::Complex& complex, double lambda) 
   return 0.66 * area / (lambda * lambda);
 }
 
-/// Refused without an explicit --max-vertices: about 15 GB while meshing.
-inline constexpr double kMostExpectedVertices = 1e7;
+/// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.5-1.8 KB, see above).
+inline constexpr double kMeshBytesPerVertex = 1.8e3;
+
+/// This machine's physical memory in bytes (POSIX sysconf; 16 GB if it cannot tell).
+inline double physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 16e9;
+}
+
+/// The most vertices a run may reach on this machine: what fits in 80% of its memory. Past
+/// that the system would kill the process (or swap for hours) instead of our cap ending it
+/// with a message and the mesh reached.
+inline double vertices_fitting_in_memory() { return 0.8 * physical_memory_bytes() / kMeshBytesPerVertex; }
+
+/// Refused without an explicit --max-vertices: ten million (about 15 GB while meshing), fewer on
+/// a machine whose memory holds fewer.
+inline double most_expected_vertices() { return std::min(1e7, vertices_fitting_in_memory()); }
 
 /// The cap on vertices when --max-vertices is not given: 50 times the expected count, at least
-/// two million (the 1° wedge at 0.5% needs 438,000), at most twenty million (memory).
+/// two million (the 1° wedge at 0.5% needs 438,000), at most twenty million and what fits in
+/// memory (a 24 GB machine: 10.7 million).
 inline std::size_t automatic_vertex_cap(double expected) {
-  return static_cast<std::size_t>(std::clamp(50 * expected, 2e6, 2e7));
+  const double most = std::min(2e7, vertices_fitting_in_memory());
+  return static_cast<std::size_t>(std::clamp(50 * expected, std::min(2e6, most), most));
 }
 
 /// Bad-input exit when the curves alone need more than `max_balls` balls at λ.
@@ -53,15 +72,15 @@ inline void reject_size_for_balls(const protect::Complex& complex, double lambda
   throw Failure{kBadInput, message};
 }
 
-/// Bad-input exit when meshing at λ would need more than kMostExpectedVertices vertices and the
-/// user did not ask for a vertex cap.
+/// Bad-input exit when meshing at λ would need more than most_expected_vertices() and the user
+/// did not ask for a vertex cap.
 inline void reject_size_for_vertices(double expected, const std::string& size_text) {
-  if (expected <= kMostExpectedVertices) return;
+  if (expected <= most_expected_vertices()) return;
   char message[320];
   std::snprintf(message, sizeof message,
                 "--size %s is too small for this model: about %.3g vertices (%.3g GB of memory while meshing); "
                 "choose a larger size, or give --max-vertices to try anyway",
-                size_text.c_str(), expected, expected * 1.5e-6);
+                size_text.c_str(), expected, expected * kMeshBytesPerVertex * 1e-9);
   throw Failure{kBadInput, message};
 }
 
@@ -75,6 +94,21 @@ inline void reject_facet_distance(double distance, double lambda, const std::str
                                " is below 1/10000 of --size: on any curved part that asks for hundreds of times "
                                "the vertices the size alone needs; choose a larger distance, or give "
                                "--max-vertices to try anyway"};
+}
+
+/// Peak memory of `delpsc triangulate` per point, rounded up (uniform:1000000: 297 MB RSS).
+inline constexpr double kTriangulationBytesPerPoint = 320;
+
+/// Bad-input exit when triangulating n points would not fit in 80% of this machine's memory.
+inline void reject_points_beyond_memory(std::size_t n) {
+  const double need = double(n) * kTriangulationBytesPerPoint;
+  if (need <= 0.8 * physical_memory_bytes()) return;
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "%zu points need about %.3g GB to triangulate, more than this machine's memory (%.3g GB) allows; "
+                "use fewer points",
+                n, need * 1e-9, physical_memory_bytes() * 1e-9);
+  throw Failure{kBadInput, message};
 }
 
 }  // namespace delpsc::app

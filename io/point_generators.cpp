@@ -63,7 +63,7 @@ std::vector<WeightedPoint> grid_points(std::size_t k, std::uint64_t seed) {
   return pts;
 }
 
-std::vector<WeightedPoint> generate_points(const std::string& spec, std::uint64_t seed) {
+GeneratorSpec parse_generator(const std::string& spec) {
   const auto colon = spec.find(':');
   if (colon == std::string::npos)
     throw std::invalid_argument("generator '" + spec + "': expected KIND:N, e.g. uniform:100000");
@@ -79,19 +79,24 @@ std::vector<WeightedPoint> generate_points(const std::string& spec, std::uint64_
   }
   if (n > 200'000'000)
     throw std::invalid_argument("generator '" + spec + "': N is larger than 2e8 points");
+  if (kind != "uniform" && kind != "weighted" && kind != "sphere" && kind != "grid")
+    throw std::invalid_argument("generator '" + spec + "': unknown kind (uniform, weighted, sphere, grid)");
+  return {kind, n};
+}
+
+std::vector<WeightedPoint> generate_points(const std::string& spec, std::uint64_t seed) {
+  const auto [kind, n] = parse_generator(spec);
   if (kind == "uniform") return uniform_points(n, seed);
   if (kind == "weighted") {
     const double r = 0.1 * std::cbrt(1.0 / static_cast<double>(n));
     return weighted_points(n, r * r, seed);
   }
-  if (kind == "sphere") return sphere_points(n, seed);
   if (kind == "grid") {
     auto k = static_cast<std::size_t>(std::cbrt(static_cast<double>(n)) + 1e-9);
     while ((k + 1) * (k + 1) * (k + 1) <= n) ++k;
     return grid_points(std::max<std::size_t>(k, 1), seed);
   }
-  throw std::invalid_argument("generator '" + spec +
-                              "': unknown kind (uniform, weighted, sphere, grid)");
+  return sphere_points(n, seed);  // kind == "sphere" (parse_generator accepts no other)
 }
 
 }  // namespace delpsc::io

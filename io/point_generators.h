@@ -31,4 +31,12 @@ std::vector<WeightedPoint> grid_points(std::size_t k, std::uint64_t seed);
 /// message on an unknown kind or a bad count.
 std::vector<WeightedPoint> generate_points(const std::string& spec, std::uint64_t seed);
 
+/// A generator spec taken apart, checked as generate_points checks it (same exceptions): lets a
+/// caller weigh the count before any point is made.
+struct GeneratorSpec {
+  std::string kind;
+  std::size_t count = 0;
+};
+GeneratorSpec parse_generator(const std::string& spec);
+
 }  // namespace delpsc::io
