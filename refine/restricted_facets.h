@@ -82,7 +82,9 @@ class RestrictedFacets {
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
   /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
   /// `inserted`: the point whose insertion made the changes (cells only shrink, see update()), or
-  /// delaunay::kNoPoint when they come from a removal.
+  /// delaunay::kNoPoint when they come from a removal. Precondition for an insertion: the
+  /// triangulation had dimension 3 before it, so the created cells are exactly those with
+  /// `inserted` as a vertex (not so when an insertion first reaches dimension 3: use rebuild()).
   void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted);
 
   std::size_t size() const { return live_; }
