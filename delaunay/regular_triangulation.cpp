@@ -762,6 +762,7 @@ void RegularTriangulation::star_cavity(PointId id, ChangeSet* changes) {
 
   if (changes) {
     changes->created.insert(changes->created.end(), s.created.begin(), s.created.end());
+    changes->replaced.insert(changes->replaced.end(), s.boundary.begin(), s.boundary.end());
     changes->destroyed.insert(changes->destroyed.end(), s.conflict.begin(), s.conflict.end());
     changes->hidden.insert(changes->hidden.end(), s.interior.begin(), s.interior.end());
   }

@@ -104,16 +104,23 @@ struct VoronoiEdge {
 /// cell died and a new one took its slot — process `destroyed` before `created`.
 /// `hidden`: points that became hidden (possibly the inserted point itself, or vertices it made
 /// redundant); `revealed`: hidden points that became vertices (after a removal).
+/// `replaced`: after an insertion into a triangulation already of dimension 3, one per created
+/// cell (same order): the destroyed cell's facet that created[k]'s facet opposite the new point
+/// replaces - the same triangle, seen from the conflict cell it bounded - so a client can read
+/// what it kept on that facet from the destroyed cell (whose data it is about to drop anyway)
+/// instead of from the surviving neighbour. Empty otherwise.
 struct ChangeSet {
   std::vector<CellId> created;
   std::vector<CellId> destroyed;
   std::vector<PointId> hidden;
   std::vector<PointId> revealed;
+  std::vector<Facet> replaced;
   void clear() {
     created.clear();
     destroyed.clear();
     hidden.clear();
     revealed.clear();
+    replaced.clear();
   }
 };
 

@@ -246,6 +246,14 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
   if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
   if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
   ++update_epoch_;
+  // What the boundary facets held, read from the destroyed side (ChangeSet::replaced) before the
+  // loop below clears it: those lines are about to be read anyway, while the surviving
+  // neighbour's would be one more cache miss per boundary facet. Both sides of a facet between
+  // live cells always hold the same reference.
+  const bool mapped = insertion && changes.replaced.size() == changes.created.size();
+  boundary_refs_.clear();
+  if (mapped)
+    for (const Facet x : changes.replaced) boundary_refs_.push_back(ref(x.cell, x.index));
   // Destroyed first: their slots may have been recycled by created cells, and still hold the old
   // references. After an insertion the records are only set aside here, since a facet on the
   // cavity's boundary may carry its records over (below); the rest are forgotten at the end.
@@ -267,7 +275,8 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
   if (!insertion)
     for (const CellId c : changes.created)
       if (dt_->is_cell_alive(c)) created_mark_[c] = update_epoch_;
-  for (const CellId c : changes.created) {
+  for (std::size_t k = 0; k < changes.created.size(); ++k) {
+    const CellId c = changes.created[k];
     if (!dt_->is_cell_alive(c)) continue;
     const int inf = dt_->infinite_index(c);
     for (int i = 0; i < 4; ++i) {
@@ -290,14 +299,14 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       // (see well_conditioned), else it is recomputed.
       if (insertion && !n_created) {
         const Facet old = inf == i ? f : m;  // the surviving cell's side
-        FacetRef& r = ref(old.cell, old.index);
+        const FacetRef r = mapped ? boundary_refs_[k] : ref(old.cell, old.index);
         if (r.slot == kNoFacet && r.stamp != kUntrusted) {
           ref(c, i) = {};
           continue;
         }
         if (r.slot != kNoFacet && records_[r.slot].alive && records_[r.slot].stamp == r.stamp) {
           if (const auto head = carry_over(r.slot, inserted)) {
-            r = ref(c, i) = *head == kNoFacet ? FacetRef{} : FacetRef{*head, records_[*head].stamp};
+            ref(old.cell, old.index) = ref(c, i) = *head == kNoFacet ? FacetRef{} : FacetRef{*head, records_[*head].stamp};
             continue;
           }
         }

@@ -154,6 +154,7 @@ class RestrictedFacets {
   std::vector<FacetRef> facet_refs_;
   std::vector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
   std::vector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
+  std::vector<FacetRef> boundary_refs_;        // scratch: per created cell, its boundary facet's old ref
   std::uint32_t update_epoch_ = 0;
   std::vector<SurfaceHit> hits_;               // scratch
   std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made

@@ -45,6 +45,12 @@ bool contains_closed(const RegularTriangulation& t, CellId c, const Vec3& p) {
   return true;
 }
 
+std::array<PointId, 3> sorted_facet(const RegularTriangulation& t, Facet f) {
+  std::array<PointId, 3> v = t.facet_vertices(f);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
 }  // namespace
 
 TEST_CASE("dimension grows through pending points; counters follow") {
@@ -100,14 +106,28 @@ TEST_CASE("insert reports its changes; hidden and replacing duplicates") {
       const auto& q = t.point(static_cast<PointId>(rng.index(t.number_of_points())));
       p = {q.x, q.y, q.z, q.w + (k % 20 == 0 ? 0.01 : -0.0001)};
     }
+    // Every facet's vertices before the insertion, to check `replaced` against.
+    std::vector<std::array<PointId, 3>> facets_before(4 * t.cell_capacity());
+    for (CellId c = 0; c < t.cell_capacity(); ++c)
+      for (int i = 0; t.is_cell_alive(c) && i < 4; ++i) facets_before[4 * c + i] = sorted_facet(t, {c, i});
     const PointId id = t.insert(p, &changes);
     CHECK(test::check_change_set(t, before, changes) == "");
     if (t.status(id) == PointStatus::hidden) {
       CHECK(changes.created.empty());
+      CHECK(changes.replaced.empty());
       CHECK(std::find(changes.hidden.begin(), changes.hidden.end(), id) != changes.hidden.end());
     } else {
-      // Every created cell is incident to the new vertex.
-      for (const CellId c : changes.created) CHECK(t.index_of(c, id) >= 0);
+      // Every created cell is incident to the new vertex, and its facet opposite it is the
+      // destroyed cell's facet `replaced` names.
+      REQUIRE(changes.replaced.size() == changes.created.size());
+      for (std::size_t j = 0; j < changes.created.size(); ++j) {
+        const CellId c = changes.created[j];
+        const int i = t.index_of(c, id);
+        CHECK(i >= 0);
+        const Facet old = changes.replaced[j];
+        CHECK(std::find(changes.destroyed.begin(), changes.destroyed.end(), old.cell) != changes.destroyed.end());
+        CHECK(sorted_facet(t, {c, i}) == facets_before[4 * old.cell + old.index]);
+      }
     }
     for (const PointId h : changes.hidden) CHECK(t.status(h) == PointStatus::hidden);
   }
