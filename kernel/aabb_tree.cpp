@@ -7,8 +7,6 @@ namespace delpsc::kernel {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;  // unit roundoff of double
-
 Box3 triangle_box(const std::array<Vec3, 3>& t) {
   Box3 b;
   b.extend(t[0]);
@@ -17,46 +15,73 @@ Box3 triangle_box(const std::array<Vec3, 3>& t) {
   return b;
 }
 
-// Conservative test whether the line piece {a + t d, t in [0, t_max]} meets the closed box.
-// Slab method (Kay & Kajiya) with inv_d = 1 / d precomputed per query; the parameters
-// t = (lo_i - a_i) * inv_d_i carry three roundings (d_i = b_i - a_i, its reciprocal, and the
-// subtraction and product - the product and subtraction each one, the reciprocal of a rounded
-// d_i one more), so each differs from the exact parameter (lo_i - a_i) / (b_i - a_i) by at most
-// 4 eps |t| (1 + O(eps)). Widening every entry parameter by 8 eps |t| downwards and every exit
-// parameter by 8 eps |t| upwards makes the computed interval contain the exact one: the test may
-// accept a box the exact piece misses by a hair (harmless: the exact triangle test follows),
-// never reject one it meets. Axes with d_i == 0 are decided exactly; a NaN from 0 * inf (d_i so
-// small that its reciprocal overflows, a_i on the slab's plane) is ignored by max/min, which
-// only widens the interval. (Cf. Ize, "Robust BVH ray traversal", JCGT 2(2), 2013, which widens
-// by 2 gamma_3 the same way.)
-bool segment_may_hit_box(const Vec3& a, const Vec3& d, const Vec3& inv_d, double t_max, const Box3& box) {
-  double t_lo = 0, t_hi = t_max;
-  for (int i = 0; i < 3; ++i) {
-    if (d[i] == 0) {
-      if (a[i] < box.lo[i] || a[i] > box.hi[i]) return false;
-      continue;
+// Conservative test whether the line piece {a + t d, t in [0, t_max]} (d = b - a) meets a closed
+// box, given as {lo_x, lo_y, lo_z, hi_x, hi_y, hi_z}. Slab method (Kay & Kajiya) without branches:
+// per query, the reciprocal r_i = fl(1 / fl(d_i)) is scaled once by (1 - 2^-49) for the entry
+// parameter and by (1 + 2^-49) for the exit parameter, and the sign of d_i picks per axis which
+// bound is entered first, so a box costs six subtractions, six products, min and max.
+//
+// Why it never rejects a box the exact piece meets. Take an axis with d_i != 0, near = the bound
+// entered first, t = (near - a_i) / d_i exact. The computed factors carry five roundings,
+// fl(b_i - a_i), the reciprocal, the scaling, fl(near - a_i) and the final product, each relative
+// at most u = 2^-53 as long as nothing overflows or underflows (ensured by the guard in the
+// constructor: 2^-1000 <= |d_i| <= 2^1000, |a_i| <= 2^1000 and the tree's coordinates at most
+// 2^1000; other axes get NaN factors, which impose no constraint; a float node bound rounded out
+// to +-inf gives a parameter of +-inf on the side where the box is unbounded). The product before its last rounding is thus
+// t (1 - 2^-49) (1 + theta) with |theta| <= (1 + u)^3 / (1 - u) - 1 < 5u, of the sign of t and
+// no larger in magnitude (16u > 5u + O(u^2)); likewise the exit product is at least the exact
+// exit parameter in magnitude. Entry parameters below 0 and exit parameters above t_max do not
+// matter (the interval starts at [0, t_max]), and a negative exit parameter is exactly
+// negative, so: if the exact piece meets the box at some t* in [0, t_max], every unrounded
+// entry product is <= t* <= every unrounded exit product, and rounding, being monotone
+// (overflow included), keeps max(0, entries) <= fl(t*) <= min(t_max, exits). An axis with
+// d_i == 0 (r_i = +-inf) contributes -inf or NaN entries and +inf or NaN exits when a_i is in the
+// slab; max and min below drop NaN operands (std::max(x, NaN) == x), so such an axis imposes
+// no constraint - the caller's test of the segment's own box decides it exactly. (Cf. Ize,
+// "Robust BVH ray traversal", JCGT 2(2), 2013, which widens by 2 gamma_3 the same way.)
+class SlabQuery {
+ public:
+  /// `tree_tame`: every coordinate of the tree's triangles is at most 2^1000 in magnitude.
+  SlabQuery(const Vec3& a, const Vec3& b, double t_max, bool tree_tame) : t_max_(t_max) {
+    for (int i = 0; i < 3; ++i) {
+      a_[i] = a[i];
+      const double d = b[i] - a[i];
+      const double r = 1 / d;
+      const double m = std::abs(d);
+      const bool tame = tree_tame && std::abs(a[i]) <= 0x1p1000 && (m == 0 || (m >= 0x1p-1000 && m <= 0x1p1000));
+      entry_scale_[i] = tame ? r * (1 - 0x1p-49) : std::numeric_limits<double>::quiet_NaN();
+      exit_scale_[i] = tame ? r * (1 + 0x1p-49) : std::numeric_limits<double>::quiet_NaN();
+      // The sign bit, not d < 0: d == -0 gives r == -inf, which needs the hi bound first.
+      entry_[i] = std::signbit(d) ? i + 3 : i;
+      exit_[i] = std::signbit(d) ? i : i + 3;
     }
-    double t0 = (box.lo[i] - a[i]) * inv_d[i];
-    double t1 = (box.hi[i] - a[i]) * inv_d[i];
-    if (t0 > t1) std::swap(t0, t1);
-    t0 -= 8 * kEps * std::abs(t0);
-    t1 += 8 * kEps * std::abs(t1);
-    t_lo = std::max(t_lo, t0);
-    t_hi = std::min(t_hi, t1);
-    if (t_lo > t_hi) return false;
   }
-  return true;
-}
+
+  template <class T>
+  bool may_hit(const std::array<T, 6>& box) const {
+    double t_lo = 0, t_hi = t_max_;
+    for (int i = 0; i < 3; ++i) {
+      t_lo = std::max(t_lo, (static_cast<double>(box[entry_[i]]) - a_[i]) * entry_scale_[i]);
+      t_hi = std::min(t_hi, (static_cast<double>(box[exit_[i]]) - a_[i]) * exit_scale_[i]);
+    }
+    return t_lo <= t_hi;
+  }
+
+ private:
+  std::array<double, 3> a_, entry_scale_, exit_scale_;
+  std::array<int, 3> entry_, exit_;
+  double t_max_;
+};
 
 // Single-precision bounds that contain [lo, hi]: each double rounded to a float, moved one float
 // further out when the rounding went inwards.
-void store_box(const Box3& b, std::array<float, 3>& lo, std::array<float, 3>& hi) {
+void store_box(const Box3& b, std::array<float, 6>& bounds) {
   for (int i = 0; i < 3; ++i) {
     float l = static_cast<float>(b.lo[i]), h = static_cast<float>(b.hi[i]);
     if (static_cast<double>(l) > b.lo[i]) l = std::nextafter(l, -std::numeric_limits<float>::infinity());
     if (static_cast<double>(h) < b.hi[i]) h = std::nextafter(h, std::numeric_limits<float>::infinity());
-    lo[i] = l;
-    hi[i] = h;
+    bounds[i] = l;
+    bounds[i + 3] = h;
   }
 }
 
@@ -145,7 +170,7 @@ Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, st
       triangle_ids_.push_back(items[k].id);
       box.extend(triangle_box(corners_.back()));
     }
-    store_box(box, nodes_[index].lo, nodes_[index].hi);
+    store_box(box, nodes_[index].bounds);
     return box;
   }
   // Split on the longest axis of the centroids' box by the binned surface area heuristic (Wald,
@@ -173,7 +198,7 @@ Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, st
   Box3 box = build_node(items, begin, mid, depth + 1, vertices, triangles);
   const auto right = static_cast<std::uint32_t>(nodes_.size());
   box.extend(build_node(items, mid, end, depth + 1, vertices, triangles));
-  store_box(box, nodes_[index].lo, nodes_[index].hi);
+  store_box(box, nodes_[index].bounds);
   nodes_[index].first_or_right = right;
   nodes_[index].count = 0;
   return box;
@@ -199,23 +224,21 @@ int AabbTree::depth() const {
 void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
                               std::vector<TriangleIntersection>& out) const {
   if (nodes_.empty()) return;
-  const Vec3 d = b - a;
-  const Vec3 inv_d = d.cwiseInverse();
-  const double t_max = is_ray ? std::numeric_limits<double>::infinity() : 1.0;
-  // The segment's own box first: six exact comparisons (a node's box contains its triangles', so
-  // this never rejects a node the segment meets) spare most nodes the slab test's products,
-  // widening and branches. The mesher's dual-edge queries, the main user: ~5% less meshing time.
+  const SlabQuery slab(a, b, is_ray ? std::numeric_limits<double>::infinity() : 1.0,
+                       bounds_.lo.cwiseAbs().maxCoeff() <= 0x1p1000 && bounds_.hi.cwiseAbs().maxCoeff() <= 0x1p1000);
+  // The piece's own box first: six exact comparisons (a node's box contains its triangles', so
+  // this never rejects a node the piece meets) that spare most nodes the slab test, and decide
+  // the axes along which the piece does not move. A ray's box is unbounded only on the side its
+  // direction points to (the sign of b_i - a_i is exact).
   Box3 reach;
-  if (is_ray) {
-    reach.lo = Vec3::Constant(-std::numeric_limits<double>::infinity());
-    reach.hi = Vec3::Constant(std::numeric_limits<double>::infinity());
-  } else {
-    reach.extend(a);
-    reach.extend(b);
+  for (int i = 0; i < 3; ++i) {
+    const double inf = std::numeric_limits<double>::infinity();
+    reach.lo[i] = is_ray ? (b[i] < a[i] ? -inf : a[i]) : std::min(a[i], b[i]);
+    reach.hi[i] = is_ray ? (b[i] > a[i] ? inf : a[i]) : std::max(a[i], b[i]);
   }
   const auto may_hit = [&](std::uint32_t i) {
-    const Box3 box = nodes_[i].box();
-    return reach.overlaps(box) && segment_may_hit_box(a, d, inv_d, t_max, box);
+    const Node& n = nodes_[i];
+    return reach.overlaps(n.box()) && slab.may_hit(n.bounds);
   };
   if (!may_hit(0)) return;
   // A node is pushed only once its box passed: the children are tested at the parent, the left
@@ -234,7 +257,9 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
       const auto& t = corners_[slot];
       // The triangle's own box first: a few flops that spare most exact tests in the leaf.
-      if (!segment_may_hit_box(a, d, inv_d, t_max, triangle_box(t))) continue;
+      const Box3 box = triangle_box(t);
+      if (!slab.may_hit(std::array<double, 6>{box.lo.x(), box.lo.y(), box.lo.z(), box.hi.x(), box.hi.y(), box.hi.z()}))
+        continue;
       const TriangleHit hit = is_ray ? intersect_ray_triangle(a, ray_direction, t[0], t[1], t[2])
                                      : intersect_segment_triangle(a, b, t[0], t[1], t[2]);
       if (hit) out.push_back({triangle_ids_[slot], hit});

@@ -11,11 +11,12 @@
 // the median (nth_element) below it or when SAH cannot cut, so the depth is at most
 // kSahDepth + ceil(log2(n / kLeafSize)) + 1 whatever the input.
 //
-// Robustness: box tests are floating point but conservative (see segment_may_hit_box in the
-// .cpp: every slab parameter is widened by its proven rounding error), so a triangle is never
-// skipped because of a box test; whether a segment meets a triangle, and through which feature
-// (vertex, edge or interior), is then decided exactly by kernel::intersect_segment_triangle. A
-// segment through an edge shared by two triangles is reported by both, with kind edge.
+// Robustness: box tests are floating point but conservative (see SlabQuery in the .cpp: every
+// slab parameter is widened beyond its proven rounding error, infinities and NaN included), so
+// a triangle is never skipped because of a box test; whether a segment meets a triangle, and
+// through which feature (vertex, edge or interior), is then decided exactly by
+// kernel::intersect_segment_triangle. A segment through an edge shared by two triangles is
+// reported by both, with kind edge.
 //
 // Cost: building O(n log n) time, about 130 bytes per triangle. A segment query costs
 // O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
@@ -127,14 +128,14 @@ class AabbTree {
   /// nodes instead of 56 halve the memory a query walks through, which is what a query on a
   /// large tree mostly pays for (cache misses on the way down).
   struct Node {
-    std::array<float, 3> lo{}, hi{};
+    std::array<float, 6> bounds{};  ///< lo x, y, z then hi x, y, z
     /// Leaf: first triangle slot; inner node: index of the right child (left is this + 1).
     std::uint32_t first_or_right = 0;
     std::uint32_t count = 0;  ///< triangles in a leaf, 0 for an inner node
     Box3 box() const {
       Box3 b;
-      b.lo = Vec3(lo[0], lo[1], lo[2]);
-      b.hi = Vec3(hi[0], hi[1], hi[2]);
+      b.lo = Vec3(bounds[0], bounds[1], bounds[2]);
+      b.hi = Vec3(bounds[3], bounds[4], bounds[5]);
       return b;
     }
   };

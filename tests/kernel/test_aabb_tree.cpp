@@ -152,7 +152,18 @@ TEST_CASE("segments exactly through grid edges and vertices lose no triangle") {
       tree.intersect_segment(p + Vec3(0, 0, -1), p + Vec3(0, 0, 2), hits);
       CHECK(ids_of(hits) == brute_segment(s, p + Vec3(0, 0, -1), p + Vec3(0, 0, 2)));
       if (p.x() <= 16 && p.y() <= 16) CHECK_FALSE(hits.empty());
+      // Axis-parallel rays: two directions are 0, so the box test rests on its infinities.
+      hits.clear();
+      tree.intersect_ray(p + Vec3(0, 0, 1), Vec3(0, 0, -1), hits);
+      CHECK(ids_of(hits) == brute_ray(s, p + Vec3(0, 0, 1), Vec3(0, 0, -1)));
+      if (p.x() <= 16 && p.y() <= 16) CHECK_FALSE(hits.empty());
     }
+    // Along the grid's edge x = 0 from x = +0 to x = -0: b - a is -0 there (1 / -0 = -inf).
+    const Vec3 a(0.0, y + 0.5, -1), b(-0.0, y + 0.5, 2);
+    std::vector<TriangleIntersection> edge_hits;
+    tree.intersect_segment(a, b, edge_hits);
+    CHECK(ids_of(edge_hits) == brute_segment(s, a, b));
+    if (y < 16) CHECK_FALSE(edge_hits.empty());
     std::vector<TriangleIntersection> hits;
     tree.intersect_segment(Vec3(-1, y, 0), Vec3(17, y, 0), hits);
     CHECK(ids_of(hits) == brute_segment(s, Vec3(-1, y, 0), Vec3(17, y, 0)));
