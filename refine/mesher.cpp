@@ -153,8 +153,10 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     facets_.discard(slot);
     return true;
   }
-  const CellId hint = dt_.incident_cell(r.vertices[0]);
-  if (far_off_dual_edge(r, hint)) {
+  // After the check, `where` is the cell containing the point: the insertion starts there
+  // instead of walking the same way again.
+  CellId where = dt_.incident_cell(r.vertices[0]);
+  if (far_off_dual_edge(r, where)) {
     ++stats_.rejected_inaccurate;
     facets_.discard(slot);
     return true;
@@ -164,7 +166,7 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
   place.kind = VertexPlace::Kind::surface;
   place.patch = r.patch;
   places_.push_back(place);
-  dt_.insert(WeightedPoint::from(r.point), &changes_, hint);
+  dt_.insert(WeightedPoint::from(r.point), &changes_, where);
   if (dt_.status(id) != PointStatus::vertex) {
     // The point is not on V_t after all: the dual edge's ends, orthocentres of nearly flat cells,
     // were computed too inaccurately in doubles. Forget the point and stop offering this record.
@@ -179,7 +181,7 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
   return true;
 }
 
-bool Mesher::far_off_dual_edge(const RestrictedFacet& r, CellId hint) const {
+bool Mesher::far_off_dual_edge(const RestrictedFacet& r, CellId& where) const {
   // A point of V_t has t's vertices as its power-nearest. One computed through a nearly flat
   // cell can be grossly wrong: on the crossed ridges at 4% a facet of four co-circular balls
   // got the point of another face 1.09 away, inserted, then re-offered the same point by the
@@ -192,7 +194,7 @@ bool Mesher::far_off_dual_edge(const RestrictedFacet& r, CellId hint) const {
     return (w.point() - r.point).squaredNorm() - w.w;
   };
   const double on_edge = power(r.vertices[0]);
-  const CellId c = dt_.locate(r.point, hint);
+  const CellId c = where = dt_.locate(r.point, where);
   for (int i = 0; i < 4; ++i) {
     const PointId v = dt_.vertex(c, i);
     if (v != delaunay::kInfiniteVertex && power(v) < 0.5 * on_edge) return true;

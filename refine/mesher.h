@@ -117,7 +117,8 @@ class Mesher {
   void apply(const delaunay::ChangeSet& changes, PointId inserted);
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
-  bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId hint) const;  // a gross error
+  // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
+  bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
   bool sweep_failures();          // re-checks every vertex; true if some fails
   void refine_ball(BallKey key);
