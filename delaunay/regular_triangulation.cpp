@@ -331,7 +331,7 @@ void RegularTriangulation::add_pending(PointId id, ChangeSet* changes) {
   basis_size_ = 0;
   build_first_tetrahedron(basis_[0], basis_[1], basis_[2], id);
   for (const PointId q : waiting)
-    if (status_[q] == PointStatus::pending) insert_in_3d(q, kNoCell, nullptr);
+    if (status_[q] == PointStatus::pending) insert_in_3d(q, kNoCell, nullptr, false);
   if (changes) {
     for (CellId c = 0; c < cells_.size(); ++c)
       if (is_cell_alive(c)) changes->created.push_back(c);
@@ -398,7 +398,7 @@ PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes,
   if (dimension() < 3)
     add_pending(id, changes);
   else
-    insert_in_3d(id, hint, changes);
+    insert_in_3d(id, hint, changes, true);  // one point, wherever the caller is refining
   return id;
 }
 
@@ -423,7 +423,7 @@ PointId RegularTriangulation::insert(std::span<const WeightedPoint> points,
     if (dimension() < 3)
       add_pending(id, nullptr);
     else
-      insert_in_3d(id, kNoCell, nullptr);
+      insert_in_3d(id, kNoCell, nullptr, false);
   }
   return first;
 }
@@ -519,7 +519,7 @@ bool RegularTriangulation::in_conflict(CellId c, const double* p, PointId replac
   return kn::power_circle_side_perturbed(q[f[0]], q[f[1]], q[f[2]], p) > 0;
 }
 
-void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* changes) {
+void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* changes, bool prefetch) {
   const double* p = points_[id].data();
   const CellId c = walk(p, valid_start(hint));
   last_cell_ = c;
@@ -545,7 +545,7 @@ void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* chan
     if (changes) changes->hidden.push_back(id);
     return;
   }
-  find_conflicts(c, p, replaced);
+  find_conflicts(c, p, replaced, prefetch);
   star_cavity(id, changes);
 }
 
@@ -553,7 +553,7 @@ void RegularTriangulation::insert_in_3d(PointId id, CellId hint, ChangeSet* chan
 // (its union is star-shaped from p: it is exactly the union of the cells that will be incident to
 // p), so the search finds all of it; every facet between a conflict cell and a non-conflict cell
 // is a boundary facet of the cavity. Non-conflict cells are marked too, so that each is tested once.
-void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId replaced) {
+void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId replaced, bool prefetch) {
   Scratch& s = scratch();
   if (s.cell_mark.size() < cells_.size()) s.cell_mark.resize(cells_.size(), 0);
   // Raw pointers and local counts: the byte-sized marks may alias anything, so going through the
@@ -584,6 +584,22 @@ void RegularTriangulation::find_conflicts(CellId start, const double* p, PointId
     if (nf + 4 > s.boundary.capacity()) {
       s.boundary.set_size(nf);
       boundary = s.boundary.reserve_more(4);
+    }
+    // The four neighbours' cells and marks, then their points, are fetched together: in mesh
+    // refinement the cells of a cavity lie scattered in memory and each first touch is a cache
+    // miss; issued at once they overlap instead of following one another (mesher -4 to -5%). A
+    // batch in spatial order finds them in cache, and there the prefetches cost ~5%.
+    if (prefetch) {
+      for (int i = 0; i < 4; ++i) {
+        const CellId y = cells[x].n[i] >> 2;
+        __builtin_prefetch(&cells[y]);
+        __builtin_prefetch(&mark[y]);
+      }
+      for (int i = 0; i < 4; ++i) {
+        const Cell& cy = cells[cells[x].n[i] >> 2];
+        for (int j = 0; j < 4; ++j)
+          if (cy.v[j] != kInfiniteVertex) __builtin_prefetch(&points[cy.v[j]]);
+      }
     }
     // One data-dependent branch per neighbour (untested or not); the lists grow branch-free.
     // The marks and the test outcomes are close to random, and mispredicted branches cost more
@@ -1026,7 +1042,7 @@ void RegularTriangulation::finish_removal(PointId v, ChangeSet* changes) {
     hidden_next_[h] = kNoPoint;
     status_[h] = PointStatus::pending;
     --hidden_count_;
-    insert_in_3d(h, last_cell_, changes ? &step : nullptr);
+    insert_in_3d(h, last_cell_, changes ? &step : nullptr, false);
     if (!changes) continue;
     for (const CellId d : step.destroyed) {
       auto it = std::find(changes->created.begin(), changes->created.end(), d);

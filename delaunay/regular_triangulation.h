@@ -292,11 +292,13 @@ class RegularTriangulation {
   void add_pending(PointId id, ChangeSet* changes);
   void remove_pending(PointId id);
   void build_first_tetrahedron(PointId a, PointId b, PointId c, PointId d);
-  void insert_in_3d(PointId id, CellId hint, ChangeSet* changes);
+  // `prefetch`: fetch each conflict cell's neighbours ahead (find_conflicts); pays off when the
+  // point's neighbourhood is likely out of cache (single insertions), not in a sorted batch.
+  void insert_in_3d(PointId id, CellId hint, ChangeSet* changes, bool prefetch);
   CellId valid_start(CellId hint) const;
   CellId walk(const double* p, CellId start) const;
   bool in_conflict(CellId c, const double* p, PointId replaced) const;
-  void find_conflicts(CellId start, const double* p, PointId replaced);
+  void find_conflicts(CellId start, const double* p, PointId replaced, bool prefetch);
   void star_cavity(PointId id, ChangeSet* changes);
   void attach_hidden(PointId id, CellId c);
   void detach_hidden(PointId id);
