@@ -78,3 +78,89 @@ TEST_CASE("skeleton check: a patch with an edge in three triangles is not a mani
   CHECK(!report.ok());
   for (const auto& p : report.patches) CHECK(p.manifold == (p.patch != static_cast<std::uint32_t>(patch)));
 }
+
+namespace {
+
+bool mentions(const refine::SkeletonReport& report, const std::string& what) {
+  return std::any_of(report.problems.begin(), report.problems.end(),
+                     [&](const std::string& p) { return p.find(what) != std::string::npos; });
+}
+
+// A vertex of the mesh inside a patch (on no feature edge) and the triangles around it.
+std::pair<std::uint32_t, std::vector<std::size_t>> interior_vertex(const io::SurfaceMesh& mesh) {
+  std::vector<bool> on_curve(mesh.vertices.size(), false);
+  for (const auto& e : mesh.edges) on_curve[e[0]] = on_curve[e[1]] = true;
+  for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (on_curve[v]) continue;
+    std::vector<std::size_t> fan;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if (std::count(mesh.triangles[t].begin(), mesh.triangles[t].end(), v)) fan.push_back(t);
+    if (fan.size() >= 4) return {v, fan};
+  }
+  return {0, {}};
+}
+
+void erase_triangles(io::SurfaceMesh& mesh, std::vector<std::size_t> which) {
+  std::sort(which.rbegin(), which.rend());
+  for (const std::size_t t : which) {
+    mesh.triangles.erase(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(t));
+    mesh.triangle_patch.erase(mesh.triangle_patch.begin() + static_cast<std::ptrdiff_t>(t));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("skeleton check: holes, pinched fans and vertices off the model are reported") {
+  const refine::PolygonDomain domain(io::make_cube(6));
+  const io::SurfaceMesh original = protect::to_surface_mesh(domain.complex());
+  REQUIRE(refine::check_skeleton(original, domain, tolerance(domain)).ok());
+  const auto [v, fan] = interior_vertex(original);
+  REQUIRE(fan.size() >= 4);
+  const auto patch = static_cast<std::uint32_t>(original.triangle_patch[fan[0]]);
+
+  SUBCASE("a hole: a boundary that is no curve, one more loop") {
+    // A triangle with no vertex on a curve, so the hole's boundary does not touch the patch's.
+    std::vector<bool> on_curve(original.vertices.size(), false);
+    for (const auto& e : original.edges) on_curve[e[0]] = on_curve[e[1]] = true;
+    const auto inner = std::find_if(fan.begin(), fan.end(), [&](std::size_t t) {
+      const auto& c = original.triangles[t];
+      return !on_curve[c[0]] && !on_curve[c[1]] && !on_curve[c[2]];
+    });
+    REQUIRE(inner != fan.end());
+    io::SurfaceMesh mesh = original;
+    erase_triangles(mesh, {*inner});
+    const auto report = refine::check_skeleton(mesh, domain, tolerance(domain));
+    CHECK(mentions(report, "is not on a boundary curve"));
+    CHECK(report.patches[patch].boundary_loops == 2);
+    CHECK(report.patches[patch].manifold);  // still a surface, with a hole
+  }
+  SUBCASE("a pinched fan: the triangles around a vertex are two disks") {
+    io::SurfaceMesh mesh = original;
+    // Two triangles of the fan sharing no edge: what is left around v is two paths.
+    std::size_t second = 0;
+    for (std::size_t i = 1; i < fan.size() && second == 0; ++i) {
+      int shared = 0;
+      for (const auto a : original.triangles[fan[0]])
+        shared += static_cast<int>(std::count(original.triangles[fan[i]].begin(), original.triangles[fan[i]].end(), a));
+      if (shared == 1) second = i;  // only v in common
+    }
+    REQUIRE(second != 0);
+    erase_triangles(mesh, {fan[0], fan[second]});
+    const auto report = refine::check_skeleton(mesh, domain, tolerance(domain));
+    CHECK(mentions(report, "the triangles around vertex " + std::to_string(v) + " are not one disk"));
+    CHECK_FALSE(report.patches[patch].manifold);
+  }
+  SUBCASE("a vertex off the model") {
+    io::SurfaceMesh mesh = original;
+    mesh.vertices[v] += Vec3(0.01, 0.02, 0.03);
+    const auto report = refine::check_skeleton(mesh, domain, tolerance(domain));
+    CHECK(mentions(report, "vertex " + std::to_string(v) + " is off the domain"));
+  }
+  SUBCASE("a patch's triangle labelled with another patch") {
+    io::SurfaceMesh mesh = original;
+    mesh.triangle_patch[fan[0]] = static_cast<std::int32_t>((patch + 1) % domain.patch_count());
+    const auto report = refine::check_skeleton(mesh, domain, tolerance(domain));
+    CHECK(mentions(report, "lies on patch " + std::to_string(patch)));
+    CHECK(mentions(report, "is not on a boundary curve"));
+  }
+}
