@@ -65,6 +65,22 @@ void BM_InputChecksTorus(benchmark::State& state) {
 }
 BENCHMARK(BM_InputChecksTorus)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+// The two checks of BM_InputChecksTorus apart, with the tree built once outside the loop.
+void BM_SelfIntersectionsTorus(benchmark::State& state) {
+  const auto nu = static_cast<int>(state.range(0));
+  const protect::Complex complex = protect::build_complex(torus_soup(nu, nu / 2));
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  for (auto _ : state) benchmark::DoNotOptimize(protect::find_self_intersections(complex, tree, 100));
+}
+BENCHMARK(BM_SelfIntersectionsTorus)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+void BM_NearContactTorus(benchmark::State& state) {
+  const auto nu = static_cast<int>(state.range(0));
+  const protect::Complex complex = protect::build_complex(torus_soup(nu, nu / 2));
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  for (auto _ : state) benchmark::DoNotOptimize(protect::find_near_contact(complex, tree, 1e-9 * 2.6));
+}
+BENCHMARK(BM_NearContactTorus)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
 // Segments of length `len` (relative to the torus's tube radius 0.3) centred on random points of
 // random triangles, in random directions: the shape of Voronoi edges dual to restricted
 // triangles (generic: they do not pass exactly through mesh vertices, which would send every

@@ -336,4 +336,47 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
   }
 }
 
+void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f) const {
+  if (nodes_.empty()) return;
+  const auto is_leaf = [&](std::uint32_t i) { return nodes_[i].count > 0; };
+  const auto children = [&](std::uint32_t i) { return std::array<std::uint32_t, 2>{i + 1, nodes_[i].first_or_right}; };
+  // Pairs of nodes whose boxes overlap (a node paired with itself stands for the pairs inside it).
+  std::vector<std::array<std::uint32_t, 2>> stack = {{0, 0}};
+  std::array<Box3, 2 * kLeafSize> boxes;
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const Node &a = nodes_[i], &b = nodes_[j];
+    if (i == j) {
+      if (is_leaf(i)) {
+        for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(corners_[a.first_or_right + s]);
+        for (std::uint32_t s = 0; s < a.count; ++s)
+          for (std::uint32_t t = s + 1; t < a.count; ++t)
+            if (boxes[s].overlaps(boxes[t])) f(triangle_ids_[a.first_or_right + s], triangle_ids_[a.first_or_right + t]);
+        continue;
+      }
+      const auto [l, r] = children(i);
+      stack.push_back({l, l});
+      stack.push_back({r, r});
+      if (nodes_[l].box().overlaps(nodes_[r].box())) stack.push_back({l, r});
+      continue;
+    }
+    if (is_leaf(i) && is_leaf(j)) {
+      for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(corners_[a.first_or_right + s]);
+      for (std::uint32_t t = 0; t < b.count; ++t) boxes[kLeafSize + t] = triangle_box(corners_[b.first_or_right + t]);
+      for (std::uint32_t s = 0; s < a.count; ++s)
+        for (std::uint32_t t = 0; t < b.count; ++t)
+          if (boxes[s].overlaps(boxes[kLeafSize + t]))
+            f(triangle_ids_[a.first_or_right + s], triangle_ids_[b.first_or_right + t]);
+      continue;
+    }
+    // Descend the inner node (the larger one when both are): its children against the other.
+    const bool split_a = is_leaf(j) || (!is_leaf(i) && a.box().diagonal() >= b.box().diagonal());
+    const std::uint32_t split = split_a ? i : j, other = split_a ? j : i;
+    const Box3 other_box = nodes_[other].box();
+    for (const std::uint32_t c : children(split))
+      if (nodes_[c].box().overlaps(other_box)) stack.push_back({c, other});
+  }
+}
+
 }  // namespace delpsc::kernel

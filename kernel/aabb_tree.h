@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -122,6 +123,13 @@ class AabbTree {
   /// Appends the ids of the triangles whose bounding boxes overlap `box` (closed boxes): a
   /// superset of the triangles that meet the box, exact for the box test itself.
   void triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out) const;
+
+  /// Calls f(a, b) once for every unordered pair of distinct triangles (ids, in no particular
+  /// order) whose closed bounding boxes overlap - the same pairs as triangles_in_box with each
+  /// triangle's box, found by one simultaneous descent of the tree against itself (each pair of
+  /// overlapping nodes visited once) instead of a query per triangle. O(n log n + k) for k pairs
+  /// on typical input.
+  void for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f) const;
 
  private:
   /// A node's box in single precision, rounded outwards (so it contains the exact box): 32-byte

@@ -74,21 +74,23 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
     const auto& tri = complex.triangles[t];
     return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
   };
-  std::vector<std::uint32_t> candidates;
-  for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
-    const std::array<Vec3, 3> a = corners(t);
-    kernel::Box3 box;
-    for (const Vec3& p : a) box.extend(p);
-    candidates.clear();
-    tree.triangles_in_box(box, candidates);
-    std::sort(candidates.begin(), candidates.end());
-    for (const std::uint32_t c : candidates) {
-      if (c <= t) continue;  // each pair once
-      if (!triangles_intersect_improperly(a, complex.triangles[t], corners(c), complex.triangles[c])) continue;
-      pairs.push_back({t, c});
-      if (pairs.size() == max_pairs) return pairs;
+  // Every box-overlapping pair once, from the tree against itself (a box query per triangle cost
+  // twice as much); the max_pairs smallest pairs that intersect are kept in a max-heap, so the
+  // result is what a scan in order of (first, second) stopping at max_pairs would give.
+  tree.for_each_overlapping_pair([&](std::uint32_t x, std::uint32_t y) {
+    const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
+    if (pairs.size() == max_pairs && !(pair < pairs.front())) return;
+    if (!triangles_intersect_improperly(corners(pair[0]), complex.triangles[pair[0]], corners(pair[1]),
+                                        complex.triangles[pair[1]]))
+      return;
+    pairs.push_back(pair);
+    std::push_heap(pairs.begin(), pairs.end());
+    if (pairs.size() > max_pairs) {
+      std::pop_heap(pairs.begin(), pairs.end());
+      pairs.pop_back();
     }
-  }
+  });
+  std::sort_heap(pairs.begin(), pairs.end());
   return pairs;
 }
 

@@ -215,3 +215,33 @@ TEST_CASE("box query equals brute force on bounding boxes") {
     CHECK(got == want);
   }
 }
+
+TEST_CASE("overlapping pairs equal brute force, each pair once") {
+  const auto check = [](const Soup& s) {
+    const AabbTree tree(s.vertices, s.triangles);
+    std::vector<std::array<std::uint32_t, 2>> got;
+    tree.for_each_overlapping_pair([&](std::uint32_t a, std::uint32_t b) {
+      CHECK(a != b);
+      got.push_back({std::min(a, b), std::max(a, b)});
+    });
+    const std::size_t reported = got.size();
+    std::sort(got.begin(), got.end());
+    got.erase(std::unique(got.begin(), got.end()), got.end());
+    CHECK(got.size() == reported);  // no pair twice
+    std::vector<Box3> boxes(s.triangles.size());
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+      for (auto v : s.triangles[t]) boxes[t].extend(s.vertices[v]);
+    std::vector<std::array<std::uint32_t, 2>> want;
+    for (std::uint32_t a = 0; a < boxes.size(); ++a)
+      for (std::uint32_t b = a + 1; b < boxes.size(); ++b)
+        if (boxes[a].overlaps(boxes[b])) want.push_back({a, b});
+    CHECK(got == want);
+    return want.size();
+  };
+  std::mt19937_64 rng(9);
+  CHECK(check(random_soup(rng, 1500, 0.05)) > 500);
+  CHECK(check(random_soup(rng, 3, 0.5)) <= 3);
+  CHECK(check(grid_soup(20)) > 0);  // boxes touching along grid lines count: closed boxes
+  const Soup one = random_soup(rng, 1, 0.1);
+  CHECK(check(one) == 0);
+}

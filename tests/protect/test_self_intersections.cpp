@@ -6,6 +6,8 @@
 // libcgal-demo models when present, and a model with one crossing pushed into it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 
 #include <delpsc/io/read_model.h>
@@ -129,5 +131,9 @@ TEST_CASE("a cube with a sheet through it: every crossing pair found, and the ca
     CHECK(s < t);
     CHECK(t >= complex.triangles.size() - 2);  // every pair involves the sheet
   }
-  CHECK(protect::find_self_intersections(complex, 5).size() == 5);
+  // Sorted, and a cap keeps the smallest pairs: what a scan in (first, second) order would stop at.
+  CHECK(std::is_sorted(pairs.begin(), pairs.end()));
+  const auto capped = protect::find_self_intersections(complex, 5);
+  REQUIRE(capped.size() == 5);
+  CHECK(std::equal(capped.begin(), capped.end(), pairs.begin()));
 }
