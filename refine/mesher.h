@@ -109,6 +109,7 @@ class Mesher {
   const MesherStats& stats() const { return stats_; }
   const delaunay::RegularTriangulation& triangulation() const { return dt_; }
   const RestrictedFacets& restricted_facets() const { return facets_; }
+  const Domain& domain() const { return *domain_; }
 
  private:
   void initialise();

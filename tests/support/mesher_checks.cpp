@@ -4,6 +4,7 @@
 
 #include <delpsc/protect/ball_checker.h>
 #include <delpsc/refine/admissibility_check.h>
+#include <delpsc/refine/restricted_facets_check.h>
 
 namespace delpsc::test {
 
@@ -18,6 +19,11 @@ void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls)
   CHECK_MESSAGE(mesher.triangulation().is_valid(&why), why);
   // Admissibility (§2.1): no unweighted vertex in or on a protecting ball, checked independently.
   for (const std::string& p : refine::check_admissibility(mesher.triangulation())) FAIL_CHECK(p);
+  // The restricted facets kept incrementally (some carried over, never rescanned) are those a
+  // scan of the final triangulation finds.
+  for (const std::string& p :
+       refine::check_restricted_facets(mesher.triangulation(), mesher.domain(), mesher.restricted_facets()))
+    FAIL_CHECK(p);
   if (balls != nullptr) {
     const protect::BallCheck check = protect::check_balls(*balls);
     for (const std::string& p : check.problems) INFO(p);

@@ -1,0 +1,25 @@
+// The restricted facets the mesher keeps incrementally (restricted_facets.h) checked against a
+// scan of every facet of the final triangulation. The mesher never rescans: after each insertion
+// it skips or carries over the facets on the cavity's boundary whose dual edge only shrank
+// (RestrictedFacets::update), which is right only if that argument and its bookkeeping are. This
+// checker recomputes the pairs (triangle, patch) from scratch and compares, for the tests.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <delpsc/delaunay/regular_triangulation.h>
+
+#include "domain.h"
+#include "restricted_facets.h"
+
+namespace delpsc::refine {
+
+/// One line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
+/// against `domain` (at most `max_problems`); empty iff they agree. O(F) segment queries for F
+/// finite facets.
+std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangulation& dt, const Domain& domain,
+                                                 const RestrictedFacets& kept, std::size_t max_problems = 20);
+
+}  // namespace delpsc::refine

@@ -1,0 +1,65 @@
+// check_restricted_facets (refine/restricted_facets_check.h): it agrees with RestrictedFacets
+// kept up to date by update() after every insertion (boundary facets skipped or carried over),
+// and it reports the facets left stale when an insertion is not followed by update().
+#include <doctest/doctest.h>
+
+#include <random>
+#include <vector>
+
+#include <delpsc/io/shapes.h>
+#include <delpsc/refine/polygon_domain.h>
+#include <delpsc/refine/restricted_facets.h>
+#include <delpsc/refine/restricted_facets_check.h>
+
+using namespace delpsc;
+
+namespace {
+
+// A point on the unit cube's surface: a random face, a random point of it.
+Vec3 on_cube(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.02, 0.98);
+  Vec3 p(u(rng), u(rng), u(rng));
+  const auto axis = static_cast<int>(rng() % 3);
+  p[axis] = rng() % 2 == 0 ? 0.0 : 1.0;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed update is caught") {
+  const refine::PolygonDomain domain(io::make_cube(2));
+  delaunay::RegularTriangulation dt;
+  // Far frame points, as the mesher uses, then a coarse sample of the surface.
+  for (int i = 0; i < 8; ++i)
+    dt.insert(WeightedPoint::from(Vec3(i & 1 ? 4.0 : -3.0, i & 2 ? 4.0 : -3.0, i & 4 ? 4.0 : -3.0)));
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 60; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+  refine::RestrictedFacets facets(dt, domain);
+  std::vector<delaunay::PointId> touched;
+  facets.rebuild(touched);
+  REQUIRE(facets.size() > 0);
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+
+  // Insertions followed by update(): the incremental records stay those of a full scan.
+  delaunay::ChangeSet changes;
+  for (int i = 0; i < 400; ++i) {
+    const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
+    if (dt.status(id) != delaunay::PointStatus::vertex) continue;
+    touched.clear();
+    facets.update(changes, touched, id);
+    if (i % 40 == 0) {
+      const auto problems = refine::check_restricted_facets(dt, domain, facets);
+      for (const auto& p : problems) INFO(p);
+      CHECK(problems.empty());
+    }
+  }
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+
+  // One insertion the records do not follow: the new point's restricted facets are missing.
+  const delaunay::PointId id = dt.insert(WeightedPoint::from(Vec3(0.5, 0.5, 0.0)), &changes);
+  REQUIRE(dt.status(id) == delaunay::PointStatus::vertex);
+  CHECK_FALSE(refine::check_restricted_facets(dt, domain, facets).empty());
+  touched.clear();
+  facets.update(changes, touched, id);
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+}
