@@ -1,7 +1,8 @@
 // refine::measure_approximation (issue 6) on meshes made by the mesher at λ = 1% of the diagonal:
 // generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo models; sample
 // spacing λ/2 (what `delpsc mesh` uses) and λ/8. Each model is meshed once outside the timing; its
-// refinement CPU time is the counter refine_ms, to read the measurement's cost against.
+// refinement CPU time is the counter refine_ms, to read the measurement's cost against. Also
+// refine::check_skeleton on the same meshes: the other check `delpsc mesh` runs on every output.
 //   cmake --build build --target bench_approximation && build/bin/bench_approximation
 #include <benchmark/benchmark.h>
 
@@ -19,6 +20,7 @@
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
+#include <delpsc/refine/skeleton_check.h>
 
 using namespace delpsc;
 
@@ -76,6 +78,12 @@ void measure(benchmark::State& state, const Meshed& m, double spacing_in_lambdas
   state.counters["refine_ms"] = m.refine_ms;
 }
 
+void check(benchmark::State& state, const Meshed& m) {
+  const double tolerance = 1e-9 * m.domain->bounding_box().diagonal();  // as delpsc mesh
+  for (auto _ : state) benchmark::DoNotOptimize(refine::check_skeleton(m.mesh, *m.domain, tolerance));
+  state.counters["triangles"] = static_cast<double>(m.mesh.triangles.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,6 +92,8 @@ int main(int argc, char** argv) {
     for (const auto& [label, spacing] : {std::pair{"h=lambda/2", 0.5}, std::pair{"h=lambda/8", 0.125}})
       benchmark::RegisterBenchmark(("measure_approximation/" + m.name + "/" + label).c_str(), measure, m, spacing)
           ->Unit(benchmark::kMillisecond);
+  for (const Meshed& m : all)
+    benchmark::RegisterBenchmark(("check_skeleton/" + m.name).c_str(), check, m)->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
