@@ -139,17 +139,15 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
     if (ps.triangles == 0) problem(sigma, "no triangle");
     // Edges with their triangle counts; the boundary is those in one triangle.
     boundary.clear();
-    std::vector<Edge> distinct;
     for (std::size_t b = 0; b < edges.size();) {
       std::size_t e = b + 1;
       while (e < edges.size() && edges[e] == edges[b]) ++e;
       const std::size_t k = e - b;
       if (k > 2) problem(sigma, "edge in " + std::to_string(k) + " triangles"), ps.manifold = false;
       if (k == 1) boundary.push_back(edges[b]);
-      distinct.push_back(edges[b]);
+      ++ps.edges;
       b = e;
     }
-    ps.edges = distinct.size();
     ps.boundary_loops = components(boundary);
     // Each vertex's fan: a path or a cycle (connected, degrees <= 2).
     for (std::size_t b = 0; b < link.size();) {
