@@ -44,6 +44,7 @@ struct MeshCommandOptions {
   std::string balls_path;
   std::string preview;
   bool check = false;
+  bool no_initial_sample = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -111,6 +112,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     reject_facet_distance(options.facet_distance, lambda, o.facet_distance, o.max_vertices.has_value());
   }
   options.facet_angle = o.facet_angle;
+  options.initial_sample = !o.no_initial_sample;
   options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(expected));
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
   progress.phase("refine");
@@ -195,10 +197,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     const refine::MesherStats& s = mesher.stats();
     std::fprintf(stderr,
                  "delpsc: insertions disk=%zu d34=%zu size=%zu distance=%zu angle=%zu, refused_inside_ball=%zu "
-                 "swallowed=%zu rejected_inaccurate=%zu seeds=%zu\n",
+                 "swallowed=%zu rejected_inaccurate=%zu seeds=%zu sampled=%zu\n",
                  s.insertions_disk, s.insertions_d34, s.insertions_size, s.insertions_distance, s.insertions_angle,
                  s.refused_inside_ball, s.swallowed,
-                 s.rejected_inaccurate, s.seeds);
+                 s.rejected_inaccurate, s.seeds, s.sampled);
   }
 
   // The mesh reached is written even when refinement stopped early: it shows where it failed.
@@ -277,6 +279,9 @@ Runner register_mesh(CLI::App& app) {
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
+  app.add_flag("--no-initial-sample", o->no_initial_sample,
+               "Start refinement from the protecting balls alone, as the paper does, instead of also from a "
+               "sample of the surface whose points are farther than the size apart (slower, as many vertices)");
   app.add_option("--balls", o->balls_path, "Write the final protecting balls as text (the format of `delpsc protect`)");
   app.add_option("--preview", o->preview,
                  "Draw the mesh to an SVG picture: triangles coloured by patch and shaded, feature curves and "

@@ -103,6 +103,15 @@ class Domain {
   virtual void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const = 0;
   /// The closest point of all patches to x; nullopt for an empty domain.
   virtual std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const = 0;
+
+  /// Appends candidate points for the mesher's initial sample (initial_sample.h) to `points`,
+  /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and
+  /// spread evenly over it (the mesher keeps ~1 in 4; a gap is no error, refinement fills it);
+  /// the same points on every call. The default appends none: the mesher then starts from the
+  /// balls and the seeds alone, as the paper does.
+  virtual void surface_candidates(double spacing, std::vector<Vec3>& points, std::vector<std::uint32_t>& patches) const {
+    (void)spacing, (void)points, (void)patches;
+  }
 };
 
 }  // namespace delpsc::refine

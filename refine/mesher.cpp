@@ -6,10 +6,23 @@
 
 #include <delpsc/kernel/predicates.h>
 
+#include "initial_sample.h"
+
 namespace delpsc::refine {
 
 using delaunay::CellId;
 using delaunay::PointStatus;
+
+namespace {
+
+VertexPlace on_patch(std::uint32_t patch) {
+  VertexPlace v;
+  v.kind = VertexPlace::Kind::surface;
+  v.patch = patch;
+  return v;
+}
+
+}  // namespace
 
 Mesher::Mesher(const Domain& domain, BallSource& balls, const MesherOptions& options)
     : domain_(&domain),
@@ -92,12 +105,10 @@ void Mesher::initialise() {
     });
     if (inside) continue;
     points.push_back(WeightedPoint::from(seeds[i]));
-    VertexPlace v;
-    v.kind = VertexPlace::Kind::surface;
-    v.patch = seed_patch[i];
-    places.push_back(v);
+    places.push_back(on_patch(seed_patch[i]));
     ++stats_.seeds;
   }
+  add_initial_sample(keys, points, places);
   std::vector<PointId> ids;
   dt_.insert(points, &ids);
   places_.assign(dt_.number_of_points(), {});
@@ -108,6 +119,28 @@ void Mesher::initialise() {
   touched_.clear();
   facets_.rebuild(touched_);
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
+}
+
+void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
+                                std::vector<VertexPlace>& places) {
+  // A sizing function would need a spacing per point; the constant λ is the common case.
+  if (!options_.initial_sample || options_.sizing || !(options_.facet_size > 0)) return;
+  std::vector<Vec3> candidates;
+  std::vector<std::uint32_t> patches;
+  domain_->surface_candidates(options_.facet_size, candidates, patches);
+  std::vector<WeightedPoint> balls;
+  for (const BallKey k : keys) {
+    const ProtectingBall b = balls_->ball(k);
+    balls.push_back(WeightedPoint::from(b.centre, b.radius * b.radius));
+  }
+  std::vector<Vec3> fixed;  // the seeds chosen above
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (places[i].kind == VertexPlace::Kind::surface) fixed.push_back(points[i].point());
+  for (const std::uint32_t i : select_separated_points(candidates, balls, fixed, options_.facet_size)) {
+    points.push_back(WeightedPoint::from(candidates[i]));
+    places.push_back(on_patch(patches[i]));
+    ++stats_.sampled;
+  }
 }
 
 void Mesher::recheck(PointId p) {
@@ -162,10 +195,7 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     return true;
   }
   const PointId id = static_cast<PointId>(dt_.number_of_points());
-  VertexPlace place;
-  place.kind = VertexPlace::Kind::surface;
-  place.patch = r.patch;
-  places_.push_back(place);
+  places_.push_back(on_patch(r.patch));
   dt_.insert(WeightedPoint::from(r.point), &changes_, where);
   if (dt_.status(id) != PointStatus::vertex) {
     // The point is not on V_t after all: the dual edge's ends, orthocentres of nearly flat cells,

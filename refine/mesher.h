@@ -26,7 +26,17 @@
 // balls can poke slightly outside the old one).
 //
 // Initialisation: the balls; for every patch without boundary (a component without features) a
-// few seed points where lines through its interior point meet it; and 8 unweighted frame points
+// few seed points where lines through its interior point meet it; unless initial_sample is off,
+// a sample of the patches whose every point is power-farther than λ from the balls, the seeds
+// and the sample points before it (initial_sample.h) - not in the paper, which starts from the
+// balls. Each such point could have been inserted by step 2(b), which only inserts points whose
+// weighted distance to all of S exceeds λ, so §3's packing argument for termination covers them
+// as it covers 2(b)'s, and the guarantees, which are about the state step 2 ends in (the disk
+// condition at every vertex, every size(t, σ) <= λ), are checked as before. What changes is the
+// cost: the sample goes in as one spatially sorted batch and the restricted facets are computed
+// once, instead of ~40 dual-edge queries per point as facets are made and unmade level after
+// level (refinement -40 to -60% on the libcgal-demo models, 3-6% more vertices; BENCHMARKS.md);
+// step 2 then has ~1/6 of the insertions left. And 8 unweighted frame points
 // far outside the bounding box (3 diagonals away), which make the triangulation 3-dimensional
 // even for a flat sheet and keep removals legal. Their Voronoi cells never reach the domain
 // (every domain point is power-closer to any sample than to them), so no restricted facet uses
@@ -61,6 +71,10 @@ struct MesherOptions {
                                   ///< at most kMaxFacetAngleDegrees (30); 0: off
   std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
+  /// Start step 2 from a λ-separated sample of the patches (initial_sample.h, and the file
+  /// comment) besides the balls and seeds; false: from the balls and seeds alone, as the paper.
+  /// Applies with a constant facet_size only (not with `sizing`).
+  bool initial_sample = true;
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
   bool local_disk_refinement = true;
@@ -81,6 +95,7 @@ struct MesherStats {
   std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
+  std::size_t sampled = 0;              ///< points of the initial sample
   std::size_t full_sweeps = 0;          ///< full re-checks of the disk condition (>= 1 per run)
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)
@@ -114,6 +129,8 @@ class Mesher {
  private:
   void initialise();
   void seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const;
+  void add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
+                          std::vector<VertexPlace>& places);
   // Facets, then re-check touched vertices; `inserted`: the point inserted, kNoPoint after a removal.
   void apply(const delaunay::ChangeSet& changes, PointId inserted);
   void recheck(PointId p);

@@ -130,4 +130,32 @@ std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) c
   return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
 }
 
+void PolygonDomain::surface_candidates(double spacing, std::vector<Vec3>& points,
+                                       std::vector<std::uint32_t>& patches) const {
+  if (!(spacing > 0) || !std::isfinite(spacing)) return;
+  const double per_area = 4.0 / (spacing * spacing);
+  for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
+    // splitmix64 seeded by the triangle: the same points on every call and every machine.
+    std::uint64_t state = 0x9e3779b97f4a7c15ull * (t + 1);
+    const auto uniform = [&state] {
+      std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+      return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    const auto& tri = complex_.triangles[t];
+    const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
+    const double expected = 0.5 * (b - a).cross(c - a).norm() * per_area;
+    // Stochastic rounding keeps the density right on meshes of triangles much smaller than spacing.
+    const double whole = std::floor(expected);
+    const std::size_t count = static_cast<std::size_t>(whole) + (uniform() < expected - whole ? 1 : 0);
+    for (std::size_t k = 0; k < count; ++k) {
+      // Uniform on the triangle: the square root spreads points evenly in area.
+      const double s = std::sqrt(uniform()), r = uniform();
+      points.push_back((1 - s) * a + s * (1 - r) * b + s * r * c);
+      patches.push_back(complex_.triangle_patch[t]);
+    }
+  }
+}
+
 }  // namespace delpsc::refine

@@ -28,8 +28,13 @@ struct Outcome {
   std::size_t vertices = 0;
 };
 
-Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, bool local_disk_refinement = true,
-                   bool check_patch_topology = true) {
+struct Run {
+  bool local_disk_refinement = true;
+  bool check_patch_topology = true;
+  bool initial_sample = true;  // false: step 2 starts from the balls and seeds alone, as the paper's
+};
+
+Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run = {}) {
   refine::PolygonDomain domain(soup);
   const kernel::Box3 box = domain.bounding_box();
   const double diag = (box.hi - box.lo).norm();
@@ -39,7 +44,8 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, bool loca
   refine::MesherOptions options;
   options.facet_size = lambda;
   options.max_vertices = 30000;
-  options.local_disk_refinement = local_disk_refinement;
+  options.local_disk_refinement = run.local_disk_refinement;
+  options.initial_sample = run.initial_sample;
   refine::Mesher mesher(domain, balls, options);
   test::run_mesher_and_check(mesher, &set);
   Outcome out;
@@ -48,7 +54,7 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, bool loca
   // G2 per patch at this size: the input patch's topology. Skipped for a patch on both sides of
   // a curve (a slit): the complex counts its cut surface, Skl² is not cut along the slit.
   for (const auto& p : out.report.patches) {
-    if (!check_patch_topology) break;
+    if (!run.check_patch_topology) break;
     const auto curves = domain.patch_curves(p.patch);
     bool slit = false;
     for (const auto c : curves) slit |= std::count(curves.begin(), curves.end(), c) > 1;
@@ -80,7 +86,7 @@ TEST_CASE("coarse sizes") {
   mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.3);
   // With the paper's global step 2(a), until the restricted facets hung off cell facets
   // (e65c8cc), this ended stuck after 88 RefineBalls and 4,969 vertices; now 23 vertices.
-  CHECK(mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.3, false).vertices < 100);
+  CHECK(mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.3, {.local_disk_refinement = false}).vertices < 100);
 }
 
 TEST_CASE("the paper's global choice in step 2(a)") {
@@ -96,6 +102,7 @@ TEST_CASE("the paper's global choice in step 2(a)") {
   options.facet_size = 0.02 * diag;
   options.max_vertices = 30000;
   options.local_disk_refinement = false;
+  options.initial_sample = false;  // a sample at 2% would spare every RefineBall
   refine::Mesher mesher(domain, balls, options);
   test::run_mesher_and_check(mesher, &set);
   test::check_g1(mesher.output(), domain);
@@ -106,8 +113,21 @@ TEST_CASE("local step 2(a) refines balls where they are too large") {
   // Whether a ball must be refined depends on the refinement's path: on the 3-page book at 4% the
   // local rule picks RefineBall twice (its ball is larger than the facet it would refine). At 2%
   // it did once until cavity-boundary facets carried their records over instead of being
-  // queried again (the hit points then differ by rounding and the path changes).
-  CHECK(mesh_model(io::make_book(3, 4), 0.04).stats.ball_refinements > 0);
+  // queried again (the hit points then differ by rounding and the path changes). Started from
+  // an initial sample, the disk condition holds there without any.
+  CHECK(mesh_model(io::make_book(3, 4), 0.04, {.initial_sample = false}).stats.ball_refinements > 0);
+}
+
+TEST_CASE("step 2 started from the balls and seeds alone, as the paper") {
+  // The default start adds a sample of the surface (initial_sample.h); the paper's own start
+  // must keep working on the same models.
+  const Run paper{.initial_sample = false};
+  mesh_model(io::make_cube(4), 0.04, paper);
+  mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.04, paper);
+  mesh_model(io::make_box_with_fin(4), 0.04, paper);
+  mesh_model(io::make_book(3, 4), 0.02, paper);
+  mesh_model(test::rotated_model(io::make_book(3, 4)), 0.02, paper);
+  CHECK(mesh_model(io::make_wedge(10, 0.1), 0.04, paper).vertices < 5000);
 }
 
 TEST_CASE("book of three sheets (non-manifold spine)") { mesh_model(io::make_book(3, 4), 0.02); }
@@ -141,6 +161,6 @@ TEST_CASE("libcgal-demo models at 4%") {
       continue;
     }
     CAPTURE(name);
-    mesh_model(io::read_model(path.string()).soup, 0.04, true, false);
+    mesh_model(io::read_model(path.string()).soup, 0.04, {.check_patch_topology = false});
   }
 }

@@ -1,0 +1,31 @@
+// The mesher's initial sample (not in the paper; mesher.h says why it keeps the guarantees):
+// points of the patches chosen so that each one is power-farther than the spacing λ from every
+// protecting ball and from every point chosen before it, i.e. each one could have been inserted
+// by step 2(b) of Mesh2Complex (Dey & Levine 2009, §3), whose points have weighted distance above
+// λ to all points of S. Inserting them in one sorted batch instead of one at a time, each with a
+// restricted-facet update and a disk check, is the point: step 2 then starts close to its end.
+//
+// Units: lengths of the coordinates; spacing > 0. Cost: O(n) expected for n candidates plus a
+// sort of the candidates by grid cell; memory O(n).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/point.h>
+
+namespace delpsc::refine {
+
+/// Indices into `candidates` of the points chosen, in the order they were chosen: greedily, in an
+/// order sorted by grid cell, a candidate is chosen when its power distance to every ball of
+/// `balls` and its squared distance to every point of `fixed` and every point chosen before it
+/// all exceed spacing². Candidates that are not finite are skipped. Empty when spacing is not
+/// positive and finite, or so small against the candidates' extent that the grid would need more
+/// than 2^20 cells along an axis.
+std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
+                                                   std::span<const WeightedPoint> balls,
+                                                   std::span<const Vec3> fixed, double spacing);
+
+}  // namespace delpsc::refine
