@@ -146,15 +146,31 @@ void PolygonDomain::surface_candidates(double spacing, std::vector<Vec3>& points
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
     const double expected = 0.5 * (b - a).cross(c - a).norm() * per_area;
-    // Stochastic rounding keeps the density right on meshes of triangles much smaller than spacing.
-    const double whole = std::floor(expected);
-    const std::size_t count = static_cast<std::size_t>(whole) + (uniform() < expected - whole ? 1 : 0);
-    for (std::size_t k = 0; k < count; ++k) {
-      // Uniform on the triangle: the square root spreads points evenly in area.
-      const double s = std::sqrt(uniform()), r = uniform();
-      points.push_back((1 - s) * a + s * (1 - r) * b + s * r * c);
+    const auto emit = [&](double u, double v) {  // lattice coordinates, u + v <= 1
+      points.push_back(a + u * (b - a) + v * (c - a));
       patches.push_back(complex_.triangle_patch[t]);
+    };
+    // Uniform in the triangle (u0, v0) + s (1 - r) (du1) + s r (du2): the square root spreads
+    // points evenly in area.
+    const auto uniform_in = [&](double u0, double v0, double u1, double v1, double u2, double v2) {
+      const double s = std::sqrt(uniform()), r = uniform();
+      emit(u0 + s * (1 - r) * (u1 - u0) + s * r * (u2 - u0), v0 + s * (1 - r) * (v1 - v0) + s * r * (v2 - v0));
+    };
+    if (expected < 1) {  // a triangle much smaller than spacing: one point or none, as expected
+      if (uniform() < expected) uniform_in(0, 0, 1, 0, 0, 1);
+      continue;
     }
+    // Stratified: the triangle cut into m² equal triangles by a barycentric grid, one point in
+    // each with probability expected / m². Even cover for the count, where independent points
+    // would leave holes that refinement then fills one insertion at a time.
+    const int m = static_cast<int>(std::ceil(std::sqrt(expected)));
+    const double keep = expected / (static_cast<double>(m) * m), step = 1.0 / m;
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; i + j < m; ++j) {
+        const double u = i * step, v = j * step;
+        if (uniform() < keep) uniform_in(u, v, u + step, v, u, v + step);
+        if (i + j + 1 < m && uniform() < keep) uniform_in(u + step, v, u, v + step, u + step, v + step);
+      }
   }
 }
 
