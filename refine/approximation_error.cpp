@@ -138,30 +138,24 @@ std::size_t pieces(double length, double h) {
 }
 
 /// The surface samples of the header: per triangle its corners not sampled yet (so each vertex
-/// once), then its barycentric grid of step 1/n without the corners. Only the triangles from
-/// index `first` on; the corners of those before count as sampled, so that splitting the
-/// triangles between threads samples every vertex once all the same.
+/// once), then triangle_samples. Only the triangles from index `first` on; the corners of those
+/// before count as sampled, so that splitting the triangles between threads samples every vertex
+/// once all the same.
 void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> triangles, double h, FarthestSample& to,
                     std::size_t first = 0) {
   std::vector<std::uint8_t> sampled(vertices.size(), 0);
   for (const Triangle& t : triangles.first(first))
     for (const std::uint32_t v : t) sampled[v] = 1;
+  std::vector<Vec3> inside;
   for (const Triangle& t : triangles.subspan(first)) {
     for (const std::uint32_t v : t)
       if (!sampled[v]) {
         sampled[v] = 1;
         to.sample(vertices[v]);
       }
-    const Vec3 &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
-    const std::size_t n = pieces(std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()})), h);
-    const double step = 1.0 / static_cast<double>(n);
-    for (std::size_t i = 0; i <= n; ++i)
-      for (std::size_t j = 0; i + j <= n; ++j) {
-        const std::size_t k = n - i - j;
-        if (i == n || j == n || k == n) continue;  // a corner
-        to.sample((static_cast<double>(i) * step) * a + (static_cast<double>(j) * step) * b +
-                  (static_cast<double>(k) * step) * c);
-      }
+    inside.clear();
+    triangle_samples(vertices[t[0]], vertices[t[1]], vertices[t[2]], h, inside);
+    for (const Vec3& p : inside) to.sample(p);
   }
 }
 
@@ -235,6 +229,39 @@ EdgesByCurve group_edges(const io::SurfaceMesh& output, std::uint32_t curve_coun
 }
 
 }  // namespace
+
+void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, std::vector<Vec3>& out) {
+  // Rows parallel to the longest edge ab, from ab (row 0) towards the apex c, at most
+  // (sqrt(3) / 2) h apart, each cut into pieces of length <= h. The longest edge is opposite the
+  // largest angle, so the angles at a and b are acute: the triangle's cross-sections shrink from
+  // ab to c, and a point p between rows i and i + 1 is within (sqrt(3) / 2) h of its foot on
+  // row i, which lies in row i's segment, itself within h / 2 of a sample of that row: p is
+  // within sqrt(3/4 + 1/4) h = h of a sample. Needle triangles get ~area / h² samples, where a
+  // barycentric grid of step longest edge / h gets ~(longest edge / h)².
+  const std::array<Vec3, 3> v{a0, b0, c0};
+  int k = 0;
+  double longest = -1;
+  for (int i = 0; i < 3; ++i)
+    if (const double l = (v[(i + 1) % 3] - v[i]).squaredNorm(); l > longest) longest = l, k = i;
+  const Vec3 &a = v[k], &b = v[(k + 1) % 3], &c = v[(k + 2) % 3];
+  if (!(longest > 0) || !(h > 0)) return;
+  // Height of c over ab, through the area: |ab x ac| / |ab|.
+  const double height = (b - a).cross(c - a).norm() / std::sqrt(longest);
+  const double row_step = std::sqrt(3.0) / 2 * h;
+  const std::size_t rows = pieces(height, row_step);
+  for (std::size_t i = 0; i < rows; ++i) {
+    // Row i joins the points at fraction f of the way from a to c and from b to c (row 0 is ab).
+    const double f = static_cast<double>(i) / static_cast<double>(rows);
+    const Vec3 left = a + f * (c - a), right = b + f * (c - b);
+    const double length = (right - left).norm();
+    const std::size_t n = pieces(length, h);
+    for (std::size_t j = 0; j <= n; ++j) {
+      if (i == 0 && (j == 0 || j == n)) continue;  // a and b: corners
+      const double g = static_cast<double>(j) / static_cast<double>(n);
+      out.push_back(left + g * (right - left));
+    }
+  }
+}
 
 double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
 

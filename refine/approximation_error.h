@@ -6,10 +6,10 @@
 // of power radius size(t, σ) ≤ λ); these figures say how close a run actually got.
 //
 // Sampling, with spacing h (ApproximationOptions::sample_spacing):
-//   - a surface: every vertex used by a triangle once, and in each triangle the points of the
-//     barycentric grid of step 1/n other than its corners (edge points, then interior points),
-//     n = ceil(longest edge / h). Every grid sub-triangle has edges <= h, so every point of the
-//     surface is within h of a sample;
+//   - a surface: every vertex used by a triangle once, and in each triangle rows of points
+//     parallel to its longest edge, at most (sqrt(3) / 2) h apart, each row cut into pieces of
+//     length <= h (triangle_samples). Every point of the surface is within h of a sample, and a
+//     needle triangle gets ~area / h² samples, not (longest edge / h)²;
 //   - a curve (polyline): every polyline vertex, and each segment cut into ceil(length / h)
 //     equal pieces.
 // The distance from each sample to the other side is exact up to the rounding of
@@ -84,6 +84,11 @@ struct ApproximationError {
   /// d / diagonal (d itself when the diagonal is 0).
   double relative(double d) const { return diagonal > 0 ? d / diagonal : d; }
 };
+
+/// The samples of triangle abc other than its corners, appended to `out` (see the file comment):
+/// every point of the triangle is within h of one of them or of a corner. O(area / h² + perimeter
+/// / h + 1) points; none for a degenerate triangle with a zero edge everywhere or h <= 0.
+void triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double h, std::vector<Vec3>& out);
 
 /// Measures `output` against the polygon mesh of `input` (see the file comment). Output labels
 /// are the input complex's ids (as the mesher writes them). Throws std::invalid_argument if h is

@@ -5,6 +5,8 @@
 // meshes made by the mesher, whose distances the size λ bounds.
 #include <doctest/doctest.h>
 
+#include <random>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -154,11 +156,13 @@ TEST_CASE("the farthest point inside a triangle: sampled within h, and by the gr
     CHECK(e.input_to_output.distance >= r - h);
     CHECK(e.output_to_input.distance <= kTiny);
   }
-  // h = 0.5: n = ceil(sqrt(2) / 0.5) = 3, whose one interior grid point is the centroid (1/3, 1/3),
-  // in the medial triangle at (2/3 - 1/2) / sqrt(2) from its hypotenuse; the edge points are
-  // all covered.
-  CHECK(measure(corners, triangle, 0.5).input_to_output.distance ==
+  // h = 0.3: rows parallel to the hypotenuse, 3 of them (height sqrt(2)/2 over a step of at most
+  // 0.26); row 1, on x + y = 2/3, is cut into 4 pieces whose middle point (1/3, 1/3) lies in the
+  // medial triangle at (2/3 - 1/2) / sqrt(2) from its hypotenuse; every other sample is covered.
+  CHECK(measure(corners, triangle, 0.3).input_to_output.distance ==
         doctest::Approx((2.0 / 3 - 0.5) / std::sqrt(2.0)).epsilon(kTiny));
+  // h = 0.5: two rows; the inner one, x + y = 1/2, lies on the corner triangles' edge: all covered.
+  CHECK(measure(corners, triangle, 0.5).input_to_output.distance <= kTiny);
   // h larger than the triangle: the corners alone, covered.
   CHECK(measure(corners, triangle, 2).input_to_output.distance <= kTiny);
 }
@@ -167,8 +171,8 @@ namespace {
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
-/// The documented surface sampling of A (each used vertex, each triangle's barycentric grid of
-/// step 1/ceil(longest edge / h)), every sample measured against every triangle of B.
+/// The documented surface sampling of A (each used vertex, each triangle's triangle_samples),
+/// every sample measured against every triangle of B.
 double brute_force_distance(const std::vector<Vec3>& av, const Triangles& a, const std::vector<Vec3>& bv,
                             const Triangles& b, double h) {
   double largest = 0;
@@ -178,17 +182,45 @@ double brute_force_distance(const std::vector<Vec3>& av, const Triangles& a, con
       best = std::min(best, (kernel::closest_point_on_triangle(p, bv[t[0]], bv[t[1]], bv[t[2]]).point - p).norm());
     largest = std::max(largest, best);
   };
+  std::vector<Vec3> samples;
   for (const auto& t : a) {
-    const Vec3 &p = av[t[0]], &q = av[t[1]], &r = av[t[2]];
-    const double longest = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
-    const int n = std::max(1, static_cast<int>(std::ceil(longest / h)));
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; i + j <= n; ++j) measure_sample((i * p + j * q + (n - i - j) * r) / n);
+    samples.assign({av[t[0]], av[t[1]], av[t[2]]});
+    refine::triangle_samples(av[t[0]], av[t[1]], av[t[2]], h, samples);
+    for (const Vec3& p : samples) measure_sample(p);
   }
   return largest;
 }
 
 }  // namespace
+
+TEST_CASE("triangle_samples: every point within h of a sample or corner, ~area / h² of them") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Vec3> samples;
+  for (int round = 0; round < 300; ++round) {
+    Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+    if (round % 3 == 0) c = a + (b - a) * unit(rng) + Vec3(u(rng), u(rng), u(rng)) * 1e-3;  // a needle
+    const double h = 0.02 + 0.3 * unit(rng);
+    samples.assign({a, b, c});
+    refine::triangle_samples(a, b, c, h, samples);
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+    INFO("round " << round << " h=" << h << " area=" << area << " samples=" << samples.size());
+    // Rows (sqrt(3)/2) h apart cut into pieces <= h: about 1.15 area / h² inside, plus the ends.
+    CHECK(static_cast<double>(samples.size()) <= 1.2 * area / (h * h) + 3 * perimeter / h + 8);
+    for (int k = 0; k < 200; ++k) {
+      const double s = std::sqrt(unit(rng)), r = unit(rng);
+      const Vec3 p = (1 - s) * a + s * (1 - r) * b + s * r * c;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Vec3& q : samples) nearest = std::min(nearest, (q - p).norm());
+      CHECK(nearest <= h * (1 + 1e-12));
+    }
+  }
+  samples.clear();
+  refine::triangle_samples(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), 0.1, samples);
+  CHECK(samples.empty());
+}
 
 TEST_CASE("the walk and the tree find what measuring every sample against every triangle finds") {
   // A sphere whose vertices are pushed in or out by a deterministic pseudo-random amount up to
