@@ -14,7 +14,8 @@
 //       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
 //       already proved off V_t (discarded) is handled by the same local step.
 //   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
-//       > sizing(x) -, facet_distance, facet_angle), insert the point x of the worst one;
+//       > sizing(x) -, facet_distance, facet_angle), insert the point x of a worst one (the
+//       worst eighth of an octave of badness, in Morton order within it: RestrictedFacets::worst);
 //   (c) repeat while something changed.
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
 // facets follow (restricted_facets.h), and only the vertices of changed facets are re-checked.

@@ -100,8 +100,9 @@ class RestrictedFacets {
   /// evaluated once when the record is made. Set before rebuild(); empty: no record is bad.
   using Badness = std::function<double(const RestrictedFacet&)>;
   void set_badness(Badness badness) { badness_ = std::move(badness); }
-  /// The live record of largest badness above 1, kNoFacet when there is none (step 2(b)).
-  /// Amortised O(log n).
+  /// A live record of badness above 1 in the highest eighth of an octave of badness, the first
+  /// of those in Morton order of their points (see order_key); kNoFacet when there is none
+  /// (step 2(b)). Amortised O(log n).
   std::uint32_t worst();
   /// Takes a record out of the largest() and worst() orders (its point proved unusable) until it is recomputed.
   void discard(std::uint32_t slot) { records_[slot].discarded = true; }
@@ -136,6 +137,8 @@ class RestrictedFacets {
   /// Examines finite facet f (its dual edge against the domain) and records it on both sides.
   void examine(delaunay::Facet f);
   bool well_conditioned(delaunay::Facet f) const;
+  /// worst()'s heap key of a bad record: badness in eighth octaves, then Morton order of x.
+  double order_key(double badness, const Vec3& x) const;
   /// The stamp of a ref without records whose facet's dual met no patch but was computed from
   /// nearly flat cells (see well_conditioned): update() examines it again.
   static constexpr std::uint32_t kUntrusted = 1;
@@ -144,6 +147,7 @@ class RestrictedFacets {
 
   const delaunay::RegularTriangulation* dt_;
   const Domain* domain_;
+  kernel::Box3 box_;  // the domain's, for order_key
   std::vector<RestrictedFacet> records_;
   std::vector<std::uint32_t> free_;
   std::size_t live_ = 0;
@@ -162,7 +166,7 @@ class RestrictedFacets {
   std::priority_queue<HeapEntry> heap_;
   bool heap_active_ = false;  // heap_ is made on the first largest() call
   Badness badness_;
-  std::priority_queue<HeapEntry> bad_heap_;  // badness, slot, stamp
+  std::priority_queue<HeapEntry> bad_heap_;  // order_key, slot, stamp
 };
 
 }  // namespace delpsc::refine
