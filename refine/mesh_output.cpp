@@ -1,7 +1,7 @@
 // Mesher::output: ∪ Skl^i S|_D (DelPSC step 3) as an io::SurfaceMesh.
 #include <algorithm>
 #include <map>
-#include <unordered_map>
+#include <vector>
 
 #include "mesher.h"
 #include "triangle_orientation.h"
@@ -10,11 +10,14 @@ namespace delpsc::refine {
 
 io::SurfaceMesh Mesher::output() const {
   io::SurfaceMesh mesh;
-  std::unordered_map<PointId, std::uint32_t> index;
+  constexpr std::uint32_t kUnset = 0xffffffffu;
+  std::vector<std::uint32_t> index(dt_.number_of_points(), kUnset);  // by PointId
   auto vertex = [&](PointId p) {
-    const auto [it, fresh] = index.emplace(p, static_cast<std::uint32_t>(mesh.vertices.size()));
-    if (fresh) mesh.vertices.push_back(dt_.point(p).point());
-    return it->second;
+    if (index[p] == kUnset) {
+      index[p] = static_cast<std::uint32_t>(mesh.vertices.size());
+      mesh.vertices.push_back(dt_.point(p).point());
+    }
+    return index[p];
   };
   // Skl² per patch: every restricted (t, σ). Sorted for a deterministic output.
   std::vector<std::pair<std::uint32_t, std::array<PointId, 3>>> triangles;

@@ -7,34 +7,37 @@ namespace delpsc::refine {
 
 std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles) {
   const std::size_t n = triangles.size();
-  // Undirected edges as (min, max, triangle), sorted so the triangles of an edge are adjacent.
-  struct EdgeUse {
-    std::uint32_t a, b, t;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * n);
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  // Each vertex's triangles (flat, by vertex), then each triangle's neighbours across its edges
+  // used by exactly two triangles: a scan of the first end's few triangles per edge, instead of
+  // sorting all 3T edge uses (and a heap-allocated list per triangle).
+  std::vector<std::uint32_t> first(vertices.size() + 1, 0), around(3 * n);
+  for (const auto& t : triangles)
+    for (const std::uint32_t v : t) ++first[v + 1];
+  for (std::size_t v = 0; v < vertices.size(); ++v) first[v + 1] += first[v];
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::uint32_t t = 0; t < n; ++t)
+      for (const std::uint32_t v : triangles[t]) around[fill[v]++] = t;
+  }
+  // `open` marks triangles with an edge that is not used by exactly two triangles.
+  std::vector<std::array<std::uint32_t, 3>> next(n, {kNone, kNone, kNone});
+  std::vector<char> open(n, 0);
   for (std::uint32_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-      uses.push_back({std::min(a, b), std::max(a, b), t});
+      std::uint32_t other = kNone, users = 1;
+      for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
+        const std::uint32_t u = around[i];
+        if (u == t || std::find(triangles[u].begin(), triangles[u].end(), b) == triangles[u].end()) continue;
+        other = u;
+        ++users;
+      }
+      if (users == 2)
+        next[t][k] = other;
+      else
+        open[t] = 1;
     }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.t < y.t;
-  });
-  // Neighbour pairs across manifold edges; `open` marks triangles with a non-2-manifold edge.
-  std::vector<std::vector<std::uint32_t>> next(n);
-  std::vector<char> open(n, 0);
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b) ++j;
-    if (j - i == 2) {
-      next[uses[i].t].push_back(uses[i + 1].t);
-      next[uses[i + 1].t].push_back(uses[i].t);
-    } else {
-      for (std::size_t k = i; k < j; ++k) open[uses[k].t] = 1;
-    }
-    i = j;
-  }
   auto has_directed = [&](std::uint32_t t, std::uint32_t a, std::uint32_t b) {
     const auto& v = triangles[t];
     for (int k = 0; k < 3; ++k)
@@ -56,6 +59,7 @@ std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std:
       component.push_back(t);
       closed &= !open[t];
       for (const std::uint32_t u : next[t]) {
+        if (u == kNone) continue;
         // The shared edge (a, b) as t traverses it; u must traverse it as (b, a).
         std::uint32_t a = 0, b = 0;
         for (int k = 0; k < 3; ++k) {

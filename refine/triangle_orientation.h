@@ -2,7 +2,8 @@
 // triangles share are oriented alike (the shared edge traversed in opposite directions) by a
 // breadth-first search; a component all of whose edges have two triangles (closed) is then
 // turned so that its signed volume is positive (counter-clockwise seen from outside). A
-// non-orientable component keeps the orientation the search gave it. O(T log T).
+// non-orientable component keeps the orientation the search gave it. O(T + V) time and memory,
+// times the largest number of triangles around a vertex.
 #pragma once
 
 #include <array>
