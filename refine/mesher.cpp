@@ -136,7 +136,12 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   std::vector<Vec3> fixed;  // the seeds chosen above
   for (std::size_t i = 0; i < points.size(); ++i)
     if (places[i].kind == VertexPlace::Kind::surface) fixed.push_back(points[i].point());
-  for (const std::uint32_t i : select_separated_points(candidates, balls, fixed, options_.facet_size)) {
+  const std::vector<std::uint32_t> chosen = select_separated_points(candidates, balls, fixed, options_.facet_size);
+  // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
+  // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
+  // rather than a part of a fine one.
+  if (options_.max_vertices > 0 && keys.size() + fixed.size() + chosen.size() > options_.max_vertices) return;
+  for (const std::uint32_t i : chosen) {
     points.push_back(WeightedPoint::from(candidates[i]));
     places.push_back(on_patch(patches[i]));
     ++stats_.sampled;

@@ -56,6 +56,10 @@ expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 40 -o "
 [[ -s "$TMP/capped.off" ]] || fail "--max-vertices: no mesh written"
 grep -q "disk condition D[1-4] fails at vertex" "$TMP/err" || fail "--max-vertices: failing vertices not listed"
 [[ "$(value disk_condition)" =~ ^[0-9]+$ ]] || fail "--max-vertices: disk_condition=$(value disk_condition)"
+# A cap above the balls (450 here) but below the initial sample (~3,100 points at 2%): the sample
+# is left out and the run stops at the cap, not past it.
+expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 2% --max-vertices 1000 -o "$TMP/capped.off"
+[[ "$(value vertices)" -le 1000 && "$(value vertices)" -gt 450 ]] || fail "--max-vertices 1000 gave $(value vertices) vertices"
 
 # CGAL-style criteria: facet_distance and facet_angle refine further than the size alone.
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% --facet-distance 0.1% --facet-angle 30 -o "$TMP/criteria.off" -v
