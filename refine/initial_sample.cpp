@@ -4,22 +4,27 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace delpsc::refine {
 
 namespace {
 
 // A hash grid of weighted points with open addressing, one chain per occupied cell, sized once
-// for every point it will hold (it never rehashes, so slot positions stay valid). Every
+// for every cell it will hold (it never rehashes, so slot positions stay valid). Every
 // interaction the selection tests reaches at most one cell size (see select_separated_points),
 // so the 27 cells around a point hold everything that can reject it.
 class PointGrid {
  public:
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
 
-  PointGrid(const Vec3& origin, double cell, std::size_t points) : origin_(origin), inverse_(1 / cell) {
+  PointGrid(const Vec3& origin, double cell) : origin_(origin), inverse_(1 / cell) {}
+
+  /// Sizes the table for at most `cells` occupied cells and `points` points; before any add.
+  /// The table is what the lookups miss in cache: it is sized by cells, not by points.
+  void reserve(std::size_t cells, std::size_t points) {
     std::size_t capacity = 64;
-    while (capacity < 2 * points) capacity *= 2;
+    while (capacity < 2 * cells) capacity *= 2;
     slots_.assign(capacity, Slot{});
     points_.reserve(points);
     next_.reserve(points);
@@ -56,9 +61,11 @@ class PointGrid {
     add_at(slot_of(key), key, w);
   }
 
-  /// Whether a point in the chain of `slot` has power distance to x at most `limit`.
-  bool chain_within(std::size_t slot, const Vec3& x, double limit) const {
-    for (std::uint32_t i = slots_[slot].head; i != kEmpty; i = next_[i]) {
+  /// The first point of the chain of `slot` (kEmpty: none).
+  std::uint32_t head(std::size_t slot) const { return slots_[slot].head; }
+  /// Whether a point in the chain that starts at `head` has power distance to x at most `limit`.
+  bool chain_within(std::uint32_t head, const Vec3& x, double limit) const {
+    for (std::uint32_t i = head; i != kEmpty; i = next_[i]) {
       const WeightedPoint& w = points_[i];
       if ((w.point() - x).squaredNorm() - w.w <= limit) return true;
     }
@@ -77,6 +84,24 @@ class PointGrid {
   std::vector<WeightedPoint> points_;
   std::vector<std::uint32_t> next_;
 };
+
+// Sorts (key, index) pairs by key then index: least significant digit first, 16 bits at a time,
+// skipping the digits all keys share (the high bits of a packed cell mostly). Stable passes
+// over pairs made in index order leave equal keys in index order. O(n) per pass where std::sort
+// was a fifth of the selection's time.
+void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> other(items.size());
+  std::vector<std::size_t> count(1 << 16);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const auto& it : items) ++count[(it.first >> shift) & 0xffff];
+    if (std::find(count.begin(), count.end(), items.size()) != count.end()) continue;  // one digit
+    std::size_t sum = 0;
+    for (std::size_t& c : count) sum += std::exchange(c, sum);
+    for (const auto& it : items) other[count[(it.first >> shift) & 0xffff]++] = it;
+    items.swap(other);
+  }
+}
 
 }  // namespace
 
@@ -99,36 +124,45 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
       order.push_back(i);
     }
   if (order.empty() || !std::isfinite(cell) || (box.hi - box.lo).maxCoeff() / cell > double{1 << 19}) return chosen;
-  PointGrid grid(box.lo, cell, balls.size() + fixed.size() + order.size());
-  for (const WeightedPoint& b : balls) grid.add(b);
-  for (const Vec3& p : fixed) grid.add(WeightedPoint::from(p));
+  PointGrid grid(box.lo, cell);
   // Cell order (then index): the candidates of a cell are tested one after another against the
   // same 27 chains, found once per cell, and the chosen points pack like a scan line.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
   keyed.reserve(order.size());
   for (const std::uint32_t i : order) keyed.emplace_back(PointGrid::pack(grid.cell_of(candidates[i])), i);
-  std::sort(keyed.begin(), keyed.end());
+  sort_by_key(keyed);
+  std::size_t candidate_cells = 0;
+  for (std::size_t k = 0; k < keyed.size(); ++k) candidate_cells += k == 0 || keyed[k].first != keyed[k - 1].first;
+  grid.reserve(balls.size() + fixed.size() + candidate_cells, balls.size() + fixed.size() + keyed.size());
+  for (const WeightedPoint& b : balls) grid.add(b);
+  for (const Vec3& p : fixed) grid.add(WeightedPoint::from(p));
   const double limit = spacing * spacing;
-  std::array<std::size_t, 27> around{};  // around[0]: the cell itself, tested first
+  std::size_t own = 0;                   // the cell's own slot
+  std::array<std::uint32_t, 27> heads{};  // heads[0]: the cell's own chain, tested first
+  std::size_t occupied = 0;              // heads[1 .. occupied): its neighbours with points
   std::uint64_t current = 0;
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     const auto [key, i] = keyed[k];
     if (k == 0 || key != current) {
+      // The neighbours' chains, once per cell: only this cell gains points until the next one.
       current = key;
       const auto c = grid.cell_of(candidates[i]);
-      around[0] = grid.slot_of(key);
-      std::size_t n = 1;
+      own = grid.slot_of(key);
+      occupied = 1;
       for (std::int64_t dx = -1; dx <= 1; ++dx)
         for (std::int64_t dy = -1; dy <= 1; ++dy)
-          for (std::int64_t dz = -1; dz <= 1; ++dz)
-            if (dx != 0 || dy != 0 || dz != 0) around[n++] = grid.slot_of(PointGrid::pack({c[0] + dx, c[1] + dy, c[2] + dz}));
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            if (dx == 0 && dy == 0 && dz == 0) continue;
+            const std::uint32_t head = grid.head(grid.slot_of(PointGrid::pack({c[0] + dx, c[1] + dy, c[2] + dz})));
+            if (head != PointGrid::kEmpty) heads[occupied++] = head;
+          }
     }
-    // A neighbour cell without points keeps the empty slot found above; only this cell gains
-    // points meanwhile, and should it claim that slot its chain is merely tested twice.
+    heads[0] = grid.head(own);
     const Vec3& x = candidates[i];
-    if (std::any_of(around.begin(), around.end(), [&](std::size_t slot) { return grid.chain_within(slot, x, limit); }))
+    if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
+                    [&](std::uint32_t head) { return grid.chain_within(head, x, limit); }))
       continue;
-    grid.add_at(around[0], key, WeightedPoint::from(x));
+    grid.add_at(own, key, WeightedPoint::from(x));
     chosen.push_back(i);
   }
   return chosen;

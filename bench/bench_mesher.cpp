@@ -1,0 +1,106 @@
+// The mesher end to end (Protect's balls made once outside the timing, then Mesher::run and
+// output, CPU time) at λ = 0.5% of the diagonal, started from the initial sample (the default)
+// and from the balls alone (the paper's start, MesherOptions::initial_sample = false); and the
+// initial sample's own parts: the domain's candidates and their selection. Generated models
+// and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo models.
+//   cmake --build build --target bench_mesher && build/bin/bench_mesher
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <delpsc/io/read_model.h>
+#include <delpsc/io/sample_part.h>
+#include <delpsc/io/shapes.h>
+#include <delpsc/protect/protect.h>
+#include <delpsc/refine/initial_sample.h>
+#include <delpsc/refine/mesher.h>
+#include <delpsc/refine/polygon_domain.h>
+#include <delpsc/refine/protected_balls.h>
+
+using namespace delpsc;
+
+namespace {
+
+struct Model {
+  std::string name;
+  std::shared_ptr<const refine::PolygonDomain> domain;
+  std::shared_ptr<const protect::BallSet> balls;
+  double lambda = 0;
+};
+
+std::vector<Model> models() {
+  std::vector<std::pair<std::string, std::function<io::TriangleSoup()>>> makers = {
+      {"sphere", [] { return io::make_sphere(16); }},
+      {"sample_part", [] { return io::make_sample_part(); }},
+  };
+  const auto data = std::filesystem::path(__FILE__).parent_path() / "../data/cgal-demo";
+  for (const char* name : {"fandisk", "part", "anchor", "joint", "cube", "elephant", "sphere"}) {
+    const auto path = data / (std::string(name) + ".off");
+    if (std::filesystem::exists(path))
+      makers.emplace_back(std::string("cgal_") + name, [path] { return io::read_model(path.string()).soup; });
+  }
+  std::vector<Model> out;
+  for (auto& [name, make] : makers) {
+    Model m{name, std::make_shared<const refine::PolygonDomain>(make()), nullptr, 0};
+    m.lambda = 0.005 * m.domain->bounding_box().diagonal();
+    m.balls = std::make_shared<const protect::BallSet>(protect::protect(m.domain->complex(), m.lambda));
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+void mesh(benchmark::State& state, const Model& m, bool initial_sample) {
+  std::size_t vertices = 0;
+  refine::MesherStats stats;
+  for (auto _ : state) {
+    protect::BallSet set = *m.balls;  // RefineBall changes it
+    refine::ProtectedBalls balls(set);
+    refine::MesherOptions options;
+    options.facet_size = m.lambda;
+    options.initial_sample = initial_sample;
+    refine::Mesher mesher(*m.domain, balls, options);
+    mesher.run();
+    const io::SurfaceMesh out = mesher.output();
+    vertices = out.vertices.size();
+    stats = mesher.stats();
+    benchmark::DoNotOptimize(out);
+  }
+  state.counters["vertices"] = static_cast<double>(vertices);
+  state.counters["sampled"] = static_cast<double>(stats.sampled);
+  state.counters["insertions"] = static_cast<double>(stats.insertions_size + stats.insertions_disk + stats.insertions_d34);
+  state.counters["us_per_vertex"] =
+      benchmark::Counter(static_cast<double>(vertices) * 1e-6, benchmark::Counter::kIsIterationInvariantRate |
+                                                                   benchmark::Counter::kInvert);
+}
+
+void initial_sample(benchmark::State& state, const Model& m) {
+  std::vector<WeightedPoint> balls;
+  for (const protect::BallId id : m.balls->live_ids()) balls.push_back((*m.balls)[id].weighted_point());
+  std::size_t chosen = 0, candidates = 0;
+  for (auto _ : state) {
+    std::vector<Vec3> points;
+    std::vector<std::uint32_t> patches;
+    m.domain->surface_candidates(m.lambda, points, patches);
+    candidates = points.size();
+    chosen = refine::select_separated_points(points, balls, {}, m.lambda).size();
+  }
+  state.counters["candidates"] = static_cast<double>(candidates);
+  state.counters["chosen"] = static_cast<double>(chosen);
+}
+
+const int registered = [] {
+  for (const Model& m : models()) {
+    benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("mesh/" + m.name + "/paper").c_str(), mesh, m, false)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("initial_sample/" + m.name).c_str(), initial_sample, m)->Unit(benchmark::kMillisecond);
+  }
+  return 0;
+}();
+
+}  // namespace
+
+BENCHMARK_MAIN();
