@@ -402,8 +402,8 @@ PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes,
   return id;
 }
 
-PointId RegularTriangulation::insert(std::span<const WeightedPoint> points,
-                                     std::vector<PointId>* ids) {
+PointId RegularTriangulation::insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids,
+                                     const std::function<void(std::size_t inserted)>& progress) {
   const auto first = static_cast<PointId>(points_.size());
   // Validate the whole batch first, so that a bad point leaves the triangulation unchanged.
   for (const WeightedPoint& p : points)
@@ -424,6 +424,7 @@ PointId RegularTriangulation::insert(std::span<const WeightedPoint> points,
       add_pending(id, nullptr);
     else
       insert_in_3d(id, kNoCell, nullptr, false);
+    if (progress && ((id - first) & 0xffff) == 0xffff) progress(id - first + 1);
   }
   return first;
 }

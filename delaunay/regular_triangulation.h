@@ -57,6 +57,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -159,8 +160,10 @@ class RegularTriangulation {
   /// each k the PointId of points[k]. Storing them in spatial order is what makes the insertion
   /// fast: a cell's vertices are then close in memory. No change report (a mesher inserting one
   /// point at a time uses insert()). Expected O(n log n). The whole batch is validated first: on
-  /// std::invalid_argument nothing was inserted.
-  PointId insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids = nullptr);
+  /// std::invalid_argument nothing was inserted. `progress`, if given, is called with the number
+  /// of points inserted so far every 2^16 points (a progress line for big batches).
+  PointId insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids = nullptr,
+                 const std::function<void(std::size_t inserted)>& progress = {});
 
   /// Removes a point: a vertex (its star is re-triangulated and the points it hid come back where
   /// they should), a hidden point (simply forgotten) or a pending point. Returns false and leaves

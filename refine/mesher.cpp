@@ -109,15 +109,19 @@ void Mesher::initialise() {
     ++stats_.seeds;
   }
   add_initial_sample(keys, points, places);
+  // The sample makes this phase long on big models: the progress line keeps moving.
+  const auto tick = [this] {
+    if (options_.progress) options_.progress(domain_vertex_count());
+  };
   std::vector<PointId> ids;
-  dt_.insert(points, &ids);
+  dt_.insert(points, &ids, [&](std::size_t) { tick(); });
   places_.assign(dt_.number_of_points(), {});
   for (std::size_t i = 0; i < ids.size(); ++i) {
     places_[ids[i]] = places[i];
     if (places[i].kind == VertexPlace::Kind::ball) ball_point_[places[i].ball] = ids[i];
   }
   touched_.clear();
-  facets_.rebuild(touched_);
+  facets_.rebuild(touched_, tick);
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
 }
 

@@ -217,12 +217,13 @@ void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
   made_.clear();
 }
 
-void RestrictedFacets::rebuild(std::vector<PointId>& touched) {
+void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick) {
   for (FacetRef& r : facet_refs_) forget(r);
   facet_refs_.assign(4 * dt_->cell_capacity(), {});
   for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
     // Each finite facet once: from its finite cell of smaller id (a hull facet from its only
     // finite cell); facets through the infinite vertex have no dual edge.
+    if (tick && (c & 0xffff) == 0xffff) tick();
     if (!dt_->is_cell_alive(c) || dt_->is_infinite(c)) continue;
     for (int i = 0; i < 4; ++i) {
       const CellId other = dt_->neighbour(c, i);

@@ -76,8 +76,8 @@ class RestrictedFacets {
   RestrictedFacets(const delaunay::RegularTriangulation& dt, const Domain& domain);
 
   /// Examines every finite facet once (initialisation only). Appends every vertex of a
-  /// restricted facet to `touched`.
-  void rebuild(std::vector<PointId>& touched);
+  /// restricted facet to `touched`. Calls `tick` (if any) every 2^16 cells, for a progress line.
+  void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {});
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
   /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
