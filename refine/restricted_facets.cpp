@@ -113,6 +113,15 @@ void RestrictedFacets::examine(Facet f) {
   std::sort(v.begin(), v.end());
   delaunay::VoronoiEdge e = dt_->dual(f);
   project_on_facet_line(v, e);
+  if (!e.source.allFinite() || !(e.is_ray ? e.direction : e.target).allFinite()) {
+    // A cell flat in doubles (four co-circular points of a planar patch, typically) has no
+    // orthocentre: the solve gives NaN or inf, and a query with such an end reports garbage
+    // hits. Where V_t lies is then undecidable in doubles; the facet gets no record and is not
+    // trusted, so it is examined again whenever a cavity reaches it (and the flat cell goes).
+    const Facet m = dt_->mirror_facet(f);
+    ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
+    return;
+  }
   if (e.is_ray)
     domain_->intersect_ray(e.source, e.direction, hits_);
   else
@@ -187,7 +196,8 @@ double RestrictedFacets::order_key(double badness, const Vec3& x) const {
   // consecutive insertions touch neighbouring cells: after the initial sample the facets left
   // to refine all lie in one or two such bands (sizes just above λ) and come out in a spatially
   // coherent order (step 2's insertions -4 to -17%, the same angles). The key is the band plus a
-  // fraction in [0, 1) decreasing along a 42-bit Morton code (14 bits per axis of the box).
+  // fraction in [0, 1) decreasing along a 42-bit Morton code (14 bits per axis of the box); the
+  // band stays far below 2^11, so the sum is exact in a double.
   const Vec3 extent = (box_.hi - box_.lo).cwiseMax(Vec3::Constant(1e-300));
   std::uint32_t q[3];
   for (int k = 0; k < 3; ++k)
@@ -195,7 +205,7 @@ double RestrictedFacets::order_key(double badness, const Vec3& x) const {
   std::uint64_t code = 0;
   for (int bit = 13; bit >= 0; --bit)
     for (int k = 0; k < 3; ++k) code = code << 1 | ((q[k] >> bit) & 1u);
-  return std::floor(std::log2(badness) * 8) + (1.0 - static_cast<double>(code) * 0x1.0p-42);
+  return std::floor(std::log2(badness) * 8) + static_cast<double>((std::uint64_t{1} << 42) - 1 - code) * 0x1.0p-42;
 }
 
 void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
@@ -315,15 +325,18 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       // new one meets none either (~40% of a cavity's facets are such boundary facets, most of
       // them off the surface); if it crossed each patch once, each record stays or goes by one
       // exact comparison (carry_over). The old outcome must have been computed well-conditioned
-      // (see well_conditioned), else it is recomputed.
+      // (see well_conditioned), and the facet with its new cell must be well-conditioned too, else
+      // it is recomputed: a fresh examination of the same cells, which is what a scan of the final
+      // triangulation (restricted_facets_check.h) does, then gives the same outcome.
       if (insertion && !n_created) {
         const Facet old = inf == i ? f : m;  // the surviving cell's side
         const FacetRef r = mapped ? boundary_refs_[k] : ref(old.cell, old.index);
-        if (r.slot == kNoFacet && r.stamp != kUntrusted) {
+        if (r.slot == kNoFacet && r.stamp != kUntrusted && well_conditioned(f)) {
           ref(c, i) = {};
           continue;
         }
-        if (r.slot != kNoFacet && records_[r.slot].alive && records_[r.slot].stamp == r.stamp) {
+        if (r.slot != kNoFacet && records_[r.slot].alive && records_[r.slot].stamp == r.stamp &&
+            well_conditioned(f)) {
           if (const auto head = carry_over(r.slot, inserted)) {
             ref(old.cell, old.index) = ref(c, i) = *head == kNoFacet ? FacetRef{} : FacetRef{*head, records_[*head].stamp};
             continue;
