@@ -84,7 +84,7 @@ void initial_sample(benchmark::State& state, const Model& m) {
   for (auto _ : state) {
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
-    m.domain->surface_candidates(m.lambda, points, patches);
+    m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
     candidates = points.size();
     chosen = refine::select_separated_points(points, balls, {}, m.lambda).size();
   }

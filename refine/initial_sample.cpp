@@ -109,12 +109,14 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
                                                    std::span<const WeightedPoint> balls,
                                                    std::span<const Vec3> fixed, double spacing) {
   std::vector<std::uint32_t> chosen;
-  if (!(spacing > 0) || !std::isfinite(spacing) || candidates.empty()) return chosen;
+  if (!(spacing > 0) || !std::isfinite(spacing) || candidates.empty() || candidates.size() > 0xffffffffu)
+    return chosen;
   // A ball B(c, r) rejects x when |x - c|² - r² <= spacing², so within sqrt(spacing² + r²);
-  // a point within spacing: one cell of that size around x's reaches them all.
+  // a point within spacing: one cell of that size around x's reaches them all. The relative
+  // 1e-9 covers the rounding of a point's cell index (below 2^-33 of a cell at index 2^19).
   double largest_weight = 0;
   for (const WeightedPoint& b : balls) largest_weight = std::max(largest_weight, b.w);
-  const double cell = std::sqrt(spacing * spacing + largest_weight);
+  const double cell = std::sqrt(spacing * spacing + largest_weight) * (1 + 1e-9);
   kernel::Box3 box;
   std::vector<std::uint32_t> order;
   order.reserve(candidates.size());
@@ -123,7 +125,8 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
       box.extend(candidates[i]);
       order.push_back(i);
     }
-  if (order.empty() || !std::isfinite(cell) || (box.hi - box.lo).maxCoeff() / cell > double{1 << 19}) return chosen;
+  // Written to refuse NaN too (a spacing whose square underflows gives a zero cell).
+  if (order.empty() || !(cell > 0) || !((box.hi - box.lo).maxCoeff() / cell <= double{1 << 19})) return chosen;
   PointGrid grid(box.lo, cell);
   // Cell order (then index): the candidates of a cell are tested one after another against the
   // same 27 chains, found once per cell, and the chosen points pack like a scan line.

@@ -23,7 +23,7 @@ namespace delpsc::refine {
 /// `balls` and its squared distance to every point of `fixed` and every point chosen before it
 /// all exceed spacing². Candidates that are not finite are skipped. Empty when spacing is not
 /// positive and finite, or so small against the candidates' extent that the grid would need more
-/// than 2^20 cells along an axis.
+/// than 2^19 cells along an axis, or when there are 2^32 candidates or more.
 std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
                                                    std::span<const WeightedPoint> balls,
                                                    std::span<const Vec3> fixed, double spacing);

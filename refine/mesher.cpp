@@ -131,7 +131,11 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   if (!options_.initial_sample || options_.sizing || !(options_.facet_size > 0)) return;
   std::vector<Vec3> candidates;
   std::vector<std::uint32_t> patches;
-  domain_->surface_candidates(options_.facet_size, candidates, patches);
+  // About 1 candidate in 6 or 7 is chosen: more than 8 per allowed vertex cannot fit under the
+  // cap and are not even made (a size far too small for the cap would otherwise exhaust memory
+  // here, at ~50 bytes a candidate); fewer may still not fit, which is checked below.
+  const std::size_t budget = options_.max_vertices > 0 ? 8 * options_.max_vertices : 0xffffffffu;
+  domain_->surface_candidates(options_.facet_size, budget, candidates, patches);
   std::vector<WeightedPoint> balls;
   for (const BallKey k : keys) {
     const ProtectingBall b = balls_->ball(k);
@@ -336,7 +340,11 @@ bool Mesher::refine_around(PointId p) {
   return true;
 }
 
-std::size_t Mesher::domain_vertex_count() const { return dt_.number_of_vertices() - frame_points_; }
+std::size_t Mesher::domain_vertex_count() const {
+  // While a batch is still below dimension 3 its points wait as pending, frame points included.
+  const std::size_t n = dt_.number_of_vertices();
+  return n > frame_points_ ? n - frame_points_ : 0;
+}
 
 void Mesher::run() {
   initialise();

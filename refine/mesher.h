@@ -80,8 +80,8 @@ struct MesherOptions {
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
   bool local_disk_refinement = true;
   /// Called with the number of domain vertices every `progress_every` steps of the loop, and
-  /// during initialisation (after the batch insertion, every 2^16 cells of the first restricted-
-  /// facet pass), for a progress line; empty: never.
+  /// during initialisation (every 2^16 points of the batch insertion and every 2^16 cells of the
+  /// first restricted-facet pass), for a progress line; empty: never.
   std::function<void(std::size_t vertices)> progress;
   std::size_t progress_every = 2000;
 };

@@ -130,22 +130,33 @@ std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) c
   return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
 }
 
-void PolygonDomain::surface_candidates(double spacing, std::vector<Vec3>& points,
+void PolygonDomain::surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
                                        std::vector<std::uint32_t>& patches) const {
   if (!(spacing > 0) || !std::isfinite(spacing)) return;
   const double per_area = 4.0 / (spacing * spacing);
+  std::vector<double> expected_in(complex_.triangles.size());
+  double total = 0;
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
-    // splitmix64 seeded by the triangle: the same points on every call and every machine.
-    std::uint64_t state = 0x9e3779b97f4a7c15ull * (t + 1);
-    const auto uniform = [&state] {
-      std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-      return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    const auto& tri = complex_.triangles[t];
+    const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
+    total += expected_in[t] = 0.5 * (b - a).cross(c - a).norm() * per_area;
+  }
+  if (!(total <= static_cast<double>(budget))) return;  // also when not finite
+  const auto mix = [](std::uint64_t z) {  // splitmix64's finaliser
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  };
+  for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
+    // splitmix64 seeded by the mixed triangle index: the same points on every call and machine,
+    // and no overlap between the streams of triangles t and t + 1 (neighbours, often).
+    std::uint64_t state = mix(t + 0x632be59bd9b4e019ull);
+    const auto uniform = [&state, &mix] {
+      return static_cast<double>(mix(state += 0x9e3779b97f4a7c15ull) >> 11) * 0x1.0p-53;
     };
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
-    const double expected = 0.5 * (b - a).cross(c - a).norm() * per_area;
+    const double expected = expected_in[t];
     const auto emit = [&](double u, double v) {  // lattice coordinates, u + v <= 1
       points.push_back(a + u * (b - a) + v * (c - a));
       patches.push_back(complex_.triangle_patch[t]);

@@ -59,7 +59,8 @@ class PolygonDomain final : public Domain {
   std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const override;
   /// Per triangle, a number of uniform random points proportional to its area (deterministic:
   /// the generator is seeded by the triangle's index). O(T + points).
-  void surface_candidates(double spacing, std::vector<Vec3>& points, std::vector<std::uint32_t>& patches) const override;
+  void surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
+                          std::vector<std::uint32_t>& patches) const override;
 
  private:
   // Merges the tree's per-triangle hits into per-patch hits (see the file comment). `b` is the

@@ -88,7 +88,7 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches at the asked d
   const double spacing = 0.05;
   std::vector<Vec3> points;
   std::vector<std::uint32_t> patches;
-  domain.surface_candidates(spacing, points, patches);
+  domain.surface_candidates(spacing, 1u << 30, points, patches);
   REQUIRE(points.size() == patches.size());
   const double expected = 6 * 4 / (spacing * spacing);  // area 6, 4 per spacing²
   CHECK(std::abs(static_cast<double>(points.size()) - expected) < 0.05 * expected);
@@ -104,10 +104,15 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches at the asked d
   // The same points on every call; nothing for a spacing that is not a length.
   std::vector<Vec3> again;
   std::vector<std::uint32_t> again_patches;
-  domain.surface_candidates(spacing, again, again_patches);
+  domain.surface_candidates(spacing, 1u << 30, again, again_patches);
   CHECK(again == points);
   std::vector<Vec3> none;
-  domain.surface_candidates(0, none, again_patches);
-  domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), none, again_patches);
+  domain.surface_candidates(0, 1u << 30, none, again_patches);
+  domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches);
   CHECK(none.empty());
+  // More than the budget: none at all (~9,600 expected here).
+  domain.surface_candidates(spacing, 9000, none, again_patches);
+  CHECK(none.empty());
+  domain.surface_candidates(spacing, 10000, none, again_patches);
+  CHECK(!none.empty());
 }
