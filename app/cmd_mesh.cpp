@@ -164,6 +164,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("lambda", lambda);
   report("balls", ball_set->size());
   report("ball_refinements", mesher.stats().ball_refinements);
+  report("initial_sample", mesher.stats().sampled);
   report("seconds_protect", seconds_protect);
   report("seconds_refine", seconds_refine);
   report("seconds", seconds);
@@ -288,7 +289,8 @@ Runner register_mesh(CLI::App& app) {
                  "corners dark");
   app.footer(
       "Prints key=value lines: vertices, triangles, patches, curves, corners, lambda, balls, "
-      "ball_refinements, seconds_protect, seconds_refine, seconds (total, I/O excluded), "
+      "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
+      "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
       "disk_condition (ok, or the number of vertices where it fails), min_angle, max_angle (degrees), "
       "hausdorff, hausdorff_out_in, hausdorff_in_out (the sampled distance between output and input surfaces, both ways "
       "and each way), feature_distance (the same between each input curve and the output's edges of that curve), "

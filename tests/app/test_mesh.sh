@@ -56,6 +56,11 @@ expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 40 -o "
 [[ -s "$TMP/capped.off" ]] || fail "--max-vertices: no mesh written"
 grep -q "disk condition D[1-4] fails at vertex" "$TMP/err" || fail "--max-vertices: failing vertices not listed"
 [[ "$(value disk_condition)" =~ ^[0-9]+$ ]] || fail "--max-vertices: disk_condition=$(value disk_condition)"
+# The initial sample is reported, and --no-initial-sample starts from the balls alone.
+expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/sampled.off"
+[[ "$(value initial_sample)" -gt 0 ]] || fail "initial_sample=$(value initial_sample) at 5%"
+expect 0 "" -- mesh "$TMP/cube.off" --size 5% --no-initial-sample --check -o "$TMP/paper.off"
+[[ "$(value initial_sample)" == "0" && "$(value g1)" == "true" ]] || fail "--no-initial-sample: initial_sample=$(value initial_sample) g1=$(value g1)"
 # A cap above the balls (450 here) but below the initial sample (~3,100 points at 2%): the sample
 # is left out and the run stops at the cap, not past it.
 expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 2% --max-vertices 1000 -o "$TMP/capped.off"
