@@ -107,7 +107,8 @@ void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items) {
 
 std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
                                                    std::span<const WeightedPoint> balls,
-                                                   std::span<const Vec3> fixed, double spacing) {
+                                                   std::span<const Vec3> fixed, double spacing,
+                                                   std::span<const double> local_spacing) {
   std::vector<std::uint32_t> chosen;
   if (!(spacing > 0) || !std::isfinite(spacing) || candidates.empty() || candidates.size() > 0xffffffffu)
     return chosen;
@@ -120,8 +121,10 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
   kernel::Box3 box;
   std::vector<std::uint32_t> order;
   order.reserve(candidates.size());
+  const bool local = !local_spacing.empty();
+  if (local && local_spacing.size() != candidates.size()) return chosen;
   for (std::uint32_t i = 0; i < candidates.size(); ++i)
-    if (candidates[i].allFinite()) {
+    if (candidates[i].allFinite() && (!local || (local_spacing[i] > 0 && local_spacing[i] <= spacing))) {
       box.extend(candidates[i]);
       order.push_back(i);
     }
@@ -162,8 +165,9 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
     }
     heads[0] = grid.head(own);
     const Vec3& x = candidates[i];
+    const double own_limit = local ? local_spacing[i] * local_spacing[i] : limit;
     if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
-                    [&](std::uint32_t head) { return grid.chain_within(head, x, limit); }))
+                    [&](std::uint32_t head) { return grid.chain_within(head, x, own_limit); }))
       continue;
     grid.add_at(own, key, WeightedPoint::from(x));
     chosen.push_back(i);

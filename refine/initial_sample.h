@@ -24,8 +24,13 @@ namespace delpsc::refine {
 /// all exceed spacing². Candidates that are not finite are skipped. Empty when spacing is not
 /// positive and finite, or so small against the candidates' extent that the grid would need more
 /// than 2^19 cells along an axis, or when there are 2^32 candidates or more.
+/// `local_spacing`, if not empty (one per candidate, each in (0, spacing]), replaces spacing in a
+/// candidate's own test: what a sizing function asks for there (step 2(b) inserts x when its
+/// weighted distance to S exceeds sizing(x)). A candidate whose local spacing is not in that
+/// range is skipped.
 std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
                                                    std::span<const WeightedPoint> balls,
-                                                   std::span<const Vec3> fixed, double spacing);
+                                                   std::span<const Vec3> fixed, double spacing,
+                                                   std::span<const double> local_spacing = {});
 
 }  // namespace delpsc::refine

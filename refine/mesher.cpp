@@ -127,8 +127,10 @@ void Mesher::initialise() {
 
 void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
                                 std::vector<VertexPlace>& places) {
-  // A sizing function would need a spacing per point; the constant λ is the common case.
-  if (!options_.initial_sample || options_.sizing || !(options_.facet_size > 0)) return;
+  // Candidates come at λ's density; with a sizing function each is tested against its own
+  // spacing min(λ, sizing(x)) (where sizing asks for less than λ the sample is only as dense as
+  // λ's, and refinement does the rest). A sizing function alone (no λ): the paper's start.
+  if (!options_.initial_sample || !(options_.facet_size > 0)) return;
   std::vector<Vec3> candidates;
   std::vector<std::uint32_t> patches;
   // About 1 candidate in 6 or 7 is chosen: more than 8 per allowed vertex cannot fit under the
@@ -144,7 +146,15 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   std::vector<Vec3> fixed;  // the seeds chosen above
   for (std::size_t i = 0; i < points.size(); ++i)
     if (places[i].kind == VertexPlace::Kind::surface) fixed.push_back(points[i].point());
-  const std::vector<std::uint32_t> chosen = select_separated_points(candidates, balls, fixed, options_.facet_size);
+  std::vector<double> local;
+  if (options_.sizing) {
+    local.resize(candidates.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      if (const double s = options_.sizing(candidates[i]); s > 0) local[i] = std::min(options_.facet_size, s);
+      // else 0 (also for NaN): the candidate is skipped; FacetCriteria reports a bad sizing
+  }
+  const std::vector<std::uint32_t> chosen =
+      select_separated_points(candidates, balls, fixed, options_.facet_size, local);
   // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.

@@ -74,7 +74,8 @@ struct MesherOptions {
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
   /// Start step 2 from a λ-separated sample of the patches (initial_sample.h, and the file
   /// comment) besides the balls and seeds; false: from the balls and seeds alone, as the paper.
-  /// Applies with a constant facet_size only (not with `sizing`).
+  /// Needs facet_size > 0; with `sizing` too, each sample point keeps min(λ, sizing) from the
+  /// others.
   bool initial_sample = true;
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.

@@ -194,8 +194,13 @@ TEST_CASE("a sizing function grades the mesh") {
   refine::MesherOptions o;
   o.facet_size = 0.2;
   o.sizing = [](const Vec3& p) { return p.x() < 0 ? 0.05 : 0.2; };
-  const io::SurfaceMesh mesh = mesh_with(io::make_sphere(8), o, 0.2);
-  std::size_t fine = 0;
-  for (const Vec3& v : mesh.vertices) fine += v.x() < 0;
-  CHECK(fine > 3 * (mesh.vertices.size() - fine));
+  for (const bool sample : {true, false}) {
+    o.initial_sample = sample;
+    refine::MesherStats stats;
+    const io::SurfaceMesh mesh = mesh_with(io::make_sphere(8), o, 0.2, &stats);
+    CHECK((stats.sampled > 0) == sample);
+    std::size_t fine = 0;
+    for (const Vec3& v : mesh.vertices) fine += v.x() < 0;
+    CHECK(fine > 3 * (mesh.vertices.size() - fine));
+  }
 }

@@ -19,8 +19,9 @@ double power(const WeightedPoint& w, const Vec3& x) { return (w.point() - x).squ
 // within that of a ball, a fixed point or a chosen point (greedy: nothing it conflicts with is
 // ever dropped, so what rejected it is still there).
 void check_selection(const std::vector<Vec3>& candidates, const std::vector<WeightedPoint>& balls,
-                     const std::vector<Vec3>& fixed, double spacing, const std::vector<std::uint32_t>& chosen) {
-  const double limit = spacing * spacing;
+                     const std::vector<Vec3>& fixed, double spacing, const std::vector<std::uint32_t>& chosen,
+                     const std::vector<double>& local = {}) {
+  const auto limit_of = [&](std::size_t i) { return local.empty() ? spacing * spacing : local[i] * local[i]; };
   std::vector<WeightedPoint> blockers(balls);
   for (const Vec3& p : fixed) blockers.push_back(WeightedPoint::from(p));
   std::vector<char> is_chosen(candidates.size(), 0);
@@ -28,13 +29,13 @@ void check_selection(const std::vector<Vec3>& candidates, const std::vector<Weig
     REQUIRE(i < candidates.size());
     CHECK_FALSE(is_chosen[i]);
     is_chosen[i] = 1;
-    for (const WeightedPoint& b : blockers) CHECK(power(b, candidates[i]) > limit);
+    for (const WeightedPoint& b : blockers) CHECK(power(b, candidates[i]) > limit_of(i));
     blockers.push_back(WeightedPoint::from(candidates[i]));
   }
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (is_chosen[i] || !candidates[i].allFinite()) continue;
     bool blocked = false;
-    for (const WeightedPoint& b : blockers) blocked |= power(b, candidates[i]) <= limit;
+    for (const WeightedPoint& b : blockers) blocked |= power(b, candidates[i]) <= limit_of(i);
     CHECK(blocked);
   }
 }
@@ -59,6 +60,30 @@ TEST_CASE("select_separated_points keeps the spacing from balls, fixed and chose
     check_selection(candidates, balls, fixed, spacing, chosen);
     CHECK(chosen == refine::select_separated_points(candidates, balls, fixed, spacing));  // deterministic
   }
+}
+
+TEST_CASE("select_separated_points with a spacing per candidate (a sizing function)") {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int round = 0; round < 10; ++round) {
+    std::vector<Vec3> candidates;
+    std::vector<double> local;
+    for (int i = 0; i < 800; ++i) {
+      candidates.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+      local.push_back(candidates.back().x() < 0.5 ? 0.03 : 0.1);  // finer on the left
+    }
+    const std::vector<WeightedPoint> balls{WeightedPoint::from(Vec3(0.5, 0.5, 0), 0.01)};
+    const auto chosen = refine::select_separated_points(candidates, balls, {}, 0.1, local);
+    check_selection(candidates, balls, {}, 0.1, chosen, local);
+    std::size_t left = 0;
+    for (const std::uint32_t i : chosen) left += candidates[i].x() < 0.5;
+    CHECK(left > 2 * (chosen.size() - left));  // the finer half holds most of the points
+  }
+  // A local spacing out of (0, spacing], or a wrong count: skipped, or nothing.
+  const std::vector<Vec3> two{{0, 0, 0}, {1, 0, 0}};
+  CHECK(refine::select_separated_points(two, {}, {}, 0.5, std::vector<double>{0.0, 0.5}) == std::vector<std::uint32_t>{1});
+  CHECK(refine::select_separated_points(two, {}, {}, 0.5, std::vector<double>{0.6, 0.5}) == std::vector<std::uint32_t>{1});
+  CHECK(refine::select_separated_points(two, {}, {}, 0.5, std::vector<double>{0.5}).empty());
 }
 
 TEST_CASE("select_separated_points: degenerate input") {
