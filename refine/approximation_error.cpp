@@ -180,6 +180,9 @@ void keep_larger(OneSidedDistance& total, const OneSidedDistance& d) {
 
 void validate(const io::SurfaceMesh& output) {
   const std::size_t nv = output.vertices.size();
+  for (std::size_t v = 0; v < nv; ++v)
+    if (!output.vertices[v].allFinite())
+      throw std::invalid_argument("measure_approximation: vertex " + std::to_string(v) + " is not finite");
   for (const auto& t : output.triangles)
     for (const std::uint32_t v : t)
       if (v >= nv) throw std::invalid_argument("measure_approximation: triangle vertex " + std::to_string(v) + " out of range");
@@ -233,7 +236,7 @@ EdgesByCurve group_edges(const io::SurfaceMesh& output, std::uint32_t curve_coun
 void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, std::vector<Vec3>& out) {
   // Rows parallel to the longest edge ab, from ab (row 0) towards the apex c, at most
   // (sqrt(3) / 2) h apart, each cut into pieces of length <= h. The longest edge is opposite the
-  // largest angle, so the angles at a and b are acute: the triangle's cross-sections shrink from
+  // largest angle, so the angles at a and b are not obtuse: the cross-sections shrink from
   // ab to c, and a point p between rows i and i + 1 is within (sqrt(3) / 2) h of its foot on
   // row i, which lies in row i's segment, itself within h / 2 of a sample of that row: p is
   // within sqrt(3/4 + 1/4) h = h of a sample. Needle triangles get ~area / h² samples, where a
@@ -244,7 +247,9 @@ void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, 
   for (int i = 0; i < 3; ++i)
     if (const double l = (v[(i + 1) % 3] - v[i]).squaredNorm(); l > longest) longest = l, k = i;
   const Vec3 &a = v[k], &b = v[(k + 1) % 3], &c = v[(k + 2) % 3];
-  if (!(longest > 0) || !(h > 0)) return;
+  // Not finite (a NaN or infinite coordinate, or h): nothing, rather than a count cast from NaN.
+  if (!a0.allFinite() || !b0.allFinite() || !c0.allFinite() || !(h > 0) || !std::isfinite(h)) return;
+  if (!(longest > 0)) return;
   // Height of c over ab, through the area: |ab x ac| / |ab|.
   const double height = (b - a).cross(c - a).norm() / std::sqrt(longest);
   const double row_step = std::sqrt(3.0) / 2 * h;

@@ -220,6 +220,12 @@ TEST_CASE("triangle_samples: every point within h of a sample or corner, ~area /
   samples.clear();
   refine::triangle_samples(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), 0.1, samples);
   CHECK(samples.empty());
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  refine::triangle_samples(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, nan, 0), 0.1, samples);
+  refine::triangle_samples(Vec3(0, 0, 0), Vec3(inf, 0, 0), Vec3(0, 1, 0), 0.1, samples);
+  refine::triangle_samples(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), nan, samples);
+  refine::triangle_samples(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), inf, samples);
+  CHECK(samples.empty());
 }
 
 TEST_CASE("the walk and the tree find what measuring every sample against every triangle finds") {
@@ -358,6 +364,9 @@ TEST_CASE("empty sides and bad arguments") {
   CHECK_THROWS_AS(measure(bad, cube, 0.1), std::invalid_argument);
   bad = m;
   bad.edge_curve.pop_back();
+  CHECK_THROWS_AS(measure(bad, cube, 0.1), std::invalid_argument);
+  bad = m;
+  bad.vertices[2].y() = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_AS(measure(bad, cube, 0.1), std::invalid_argument);
 }
 
