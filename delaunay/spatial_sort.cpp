@@ -7,6 +7,8 @@
 #include <limits>
 #include <utility>
 
+#include <delpsc/kernel/bits.h>
+
 namespace delpsc::delaunay {
 namespace {
 
@@ -41,26 +43,8 @@ std::uint64_t hilbert_key(std::array<std::uint32_t, 3> x, int bits) {
   return key;
 }
 
-/// LSD radix sort of (key, index) pairs on the low `key_bits` bits of the key, 8 bits a pass.
-void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items, int key_bits,
-                std::vector<std::pair<std::uint64_t, std::uint32_t>>& tmp) {
-  tmp.resize(items.size());
-  for (int shift = 0; shift < key_bits; shift += 8) {
-    std::array<std::size_t, 257> count{};
-    for (const auto& it : items) ++count[((it.first >> shift) & 0xFFu) + 1];
-    for (int b = 0; b < 256; ++b) count[b + 1] += count[b];
-    for (const auto& it : items) tmp[count[(it.first >> shift) & 0xFFu]++] = it;
-    items.swap(tmp);
-  }
-}
-
 /// splitmix64: a tiny, well-mixed deterministic generator for the shuffle.
-std::uint64_t next_random(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
+std::uint64_t next_random(std::uint64_t& state) { return kernel::mix64(state += 0x9e3779b97f4a7c15ull); }
 
 }  // namespace
 
@@ -85,7 +69,7 @@ void hilbert_sort(std::span<const WeightedPoint> points, std::span<std::uint32_t
   const double scale = extent > 0 ? cells / extent : 0;
   const auto max_cell = static_cast<std::uint32_t>(cells - 1);
 
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> items(indices.size()), tmp;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> items(indices.size());
   for (std::size_t j = 0; j < indices.size(); ++j) {
     const double* p = points[indices[j]].data();
     std::array<std::uint32_t, 3> cell;
@@ -95,7 +79,7 @@ void hilbert_sort(std::span<const WeightedPoint> points, std::span<std::uint32_t
     }
     items[j] = {hilbert_key(cell, bits), indices[j]};
   }
-  radix_sort(items, 3 * bits, tmp);
+  kernel::radix_sort_by_key(items, 3 * bits);
   for (std::size_t j = 0; j < indices.size(); ++j) indices[j] = items[j].second;
 }
 

@@ -5,18 +5,15 @@
 #include <cassert>
 #include <cmath>
 
+#include <delpsc/kernel/bits.h>
+
 namespace delpsc::protect::detail {
 
 namespace {
 
 // splitmix64 finaliser: cell keys are small consecutive integers, which std::hash would map to
 // themselves and cluster in the buckets.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
+std::uint64_t mix(std::uint64_t x) { return kernel::mix64(x + 0x9e3779b97f4a7c15ull); }
 
 }  // namespace
 

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include <delpsc/kernel/bits.h>
+
 namespace delpsc::refine {
 
 namespace {
@@ -85,24 +87,6 @@ class PointGrid {
   std::vector<std::uint32_t> next_;
 };
 
-// Sorts (key, index) pairs by key then index: least significant digit first, 16 bits at a time,
-// skipping the digits all keys share (the high bits of a packed cell mostly). Stable passes
-// over pairs made in index order leave equal keys in index order. O(n) per pass where std::sort
-// was a fifth of the selection's time.
-void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> other(items.size());
-  std::vector<std::size_t> count(1 << 16);
-  for (int shift = 0; shift < 64; shift += 16) {
-    std::fill(count.begin(), count.end(), 0);
-    for (const auto& it : items) ++count[(it.first >> shift) & 0xffff];
-    if (std::find(count.begin(), count.end(), items.size()) != count.end()) continue;  // one digit
-    std::size_t sum = 0;
-    for (std::size_t& c : count) sum += std::exchange(c, sum);
-    for (const auto& it : items) other[count[(it.first >> shift) & 0xffff]++] = it;
-    items.swap(other);
-  }
-}
-
 }  // namespace
 
 std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
@@ -136,7 +120,7 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
   keyed.reserve(order.size());
   for (const std::uint32_t i : order) keyed.emplace_back(PointGrid::pack(grid.cell_of(candidates[i])), i);
-  sort_by_key(keyed);
+  kernel::radix_sort_by_key(keyed);  // stable: equal cells keep index order
   std::size_t candidate_cells = 0;
   for (std::size_t k = 0; k < keyed.size(); ++k) candidate_cells += k == 0 || keyed[k].first != keyed[k - 1].first;
   grid.reserve(balls.size() + fixed.size() + candidate_cells, balls.size() + fixed.size() + keyed.size());

@@ -5,6 +5,8 @@
 #include <map>
 #include <tuple>
 
+#include <delpsc/kernel/bits.h>
+
 namespace delpsc::refine {
 
 namespace {
@@ -142,17 +144,12 @@ void PolygonDomain::surface_candidates(double spacing, std::size_t budget, std::
     total += expected_in[t] = 0.5 * (b - a).cross(c - a).norm() * per_area;
   }
   if (!(total <= static_cast<double>(budget))) return;  // also when not finite
-  const auto mix = [](std::uint64_t z) {  // splitmix64's finaliser
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  };
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
     // splitmix64 seeded by the mixed triangle index: the same points on every call and machine,
     // and no overlap between the streams of triangles t and t + 1 (neighbours, often).
-    std::uint64_t state = mix(t + 0x632be59bd9b4e019ull);
-    const auto uniform = [&state, &mix] {
-      return static_cast<double>(mix(state += 0x9e3779b97f4a7c15ull) >> 11) * 0x1.0p-53;
+    std::uint64_t state = kernel::mix64(t + 0x632be59bd9b4e019ull);
+    const auto uniform = [&state] {
+      return static_cast<double>(kernel::mix64(state += 0x9e3779b97f4a7c15ull) >> 11) * 0x1.0p-53;
     };
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
