@@ -15,6 +15,13 @@ using delaunay::kInfiniteVertex;
 RestrictedFacets::RestrictedFacets(const delaunay::RegularTriangulation& dt, const Domain& domain)
     : dt_(&dt), domain_(&domain), box_(domain.bounding_box()) {}
 
+void RestrictedFacets::exclude_vertices(std::span<const PointId> points) {
+  for (const PointId p : points) {
+    if (excluded_.size() <= p) excluded_.resize(p + 1, 0);
+    excluded_[p] = 1;
+  }
+}
+
 std::uint32_t RestrictedFacets::new_record() {
   std::uint32_t s;
   if (!free_.empty()) {
@@ -111,6 +118,9 @@ void RestrictedFacets::examine(Facet f) {
   // depend on which cell the facet is seen from.
   std::array<PointId, 3> v = dt_->facet_vertices(f);
   std::sort(v.begin(), v.end());
+  // V_t lies in the power cell of an excluded vertex, which misses the domain: no record, and an
+  // outcome update() may carry over (it stays true however the cells change).
+  if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;
   delaunay::VoronoiEdge e = dt_->dual(f);
   project_on_facet_line(v, e);
   if (!e.source.allFinite() || !(e.is_ray ? e.direction : e.target).allFinite()) {

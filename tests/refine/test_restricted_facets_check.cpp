@@ -63,3 +63,38 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
   facets.update(changes, touched, id);
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
 }
+
+TEST_CASE("excluded frame points: no facet through them is examined, and the records still equal a fresh scan") {
+  const refine::PolygonDomain domain(io::make_cube(2));
+  delaunay::RegularTriangulation dt;
+  std::vector<delaunay::PointId> frame;
+  for (int i = 0; i < 8; ++i)
+    frame.push_back(dt.insert(WeightedPoint::from(Vec3(i & 1 ? 4.0 : -3.0, i & 2 ? 4.0 : -3.0, i & 4 ? 4.0 : -3.0))));
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 200; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+  refine::RestrictedFacets facets(dt, domain);
+  facets.exclude_vertices(frame);
+  std::vector<delaunay::PointId> touched;
+  facets.rebuild(touched);
+  REQUIRE(facets.size() > 0);
+  // The frame's power cells miss the cube, so skipping their facets loses nothing.
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+  delaunay::ChangeSet changes;
+  for (int i = 0; i < 200; ++i) {
+    const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
+    if (dt.status(id) != delaunay::PointStatus::vertex) continue;
+    touched.clear();
+    facets.update(changes, touched, id);
+  }
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+
+  // Excluding a point on the surface does drop its restricted facets, and the check sees it.
+  refine::RestrictedFacets wrong(dt, domain);
+  const delaunay::PointId on_surface = frame.back() + 1;
+  REQUIRE(dt.status(on_surface) == delaunay::PointStatus::vertex);
+  const std::vector<delaunay::PointId> one{on_surface};
+  wrong.exclude_vertices(one);
+  wrong.rebuild(touched);
+  CHECK(wrong.incident(on_surface).empty());
+  CHECK_FALSE(refine::check_restricted_facets(dt, domain, wrong).empty());
+}
