@@ -92,6 +92,32 @@ static_assert(AabbTree::kSahDepth + 33 <= kStackSize, "the traversal stack must 
 
 }  // namespace
 
+// A floating-point filter for "the segment stays strictly on one side of the triangle's plane",
+// which spares most leaf triangles the box and exact tests. With u = q - p, v = r - p, the exact
+// side of x is the sign of V(x) = (u x v) . (x - p); the filter evaluates s(x) = fl(n . x) - d
+// with n = fl(u x v), d = fl(n . p). Each component of n is off by at most 8 eps U V (U, V the
+// largest components of u, v: two products of rounded differences, then a subtraction), so
+// |n - u x v|_1 <= 24 eps U V; the two dot products and the subtraction add at most
+// 7 eps |n|_1 (|x| + |p|) (infinity norms). Hence |s(x) - V(x)| <= eps (7 |n|_1 + 24 U V)
+// (|x| + |p|), and the filter uses 64 eps (|n|_1 + 4 U V) (|x| + |p|), over twice that, plus an
+// absolute 2^-1000 for results near the subnormal range. When both ends have |s| above the bound
+// and the same sign, V has that sign at both ends, so the segment misses the plane and the
+// triangle. A degenerate triangle (V = 0 everywhere) never passes; a triangle with tiny or huge
+// coordinates (U V outside [2^-900, 2^900]) gets an infinite bound, i.e. no filter; an infinite
+// or NaN s fails the comparisons. Only the caller's exact test decides a hit.
+AabbTree::Plane AabbTree::plane_filter(const std::array<Vec3, 3>& t) {
+  Plane plane;
+  const Vec3 u = t[1] - t[0], v = t[2] - t[0];
+  plane.normal = u.cross(v);
+  plane.offset = plane.normal.dot(t[0]);
+  const double uv = u.cwiseAbs().maxCoeff() * v.cwiseAbs().maxCoeff();
+  const double factor = 64 * 0x1p-53 * (plane.normal.cwiseAbs().sum() + 4 * uv);
+  const bool tame = uv >= 0x1p-900 && uv <= 0x1p900 && t[0].cwiseAbs().maxCoeff() <= 0x1p300;
+  plane.error_factor = tame ? factor : std::numeric_limits<double>::infinity();
+  plane.error_constant = tame ? factor * t[0].cwiseAbs().maxCoeff() + 0x1p-1000 : std::numeric_limits<double>::infinity();
+  return plane;
+}
+
 AabbTree::AabbTree(std::span<const Vec3> vertices,
                    std::span<const std::array<std::uint32_t, 3>> triangles) {
   const auto n = static_cast<std::uint32_t>(triangles.size());
@@ -105,9 +131,10 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
   nodes_.reserve(2 * (n / kLeafSize) + 2);
   // Leaves copy their triangles' corners as they are made, so the corner array ends up in leaf
   // order and a leaf reads one contiguous block.
-  corners_.reserve(n);
+  slots_.reserve(n);
   triangle_ids_.reserve(n);
   bounds_ = build_node(items, 0, n, 0, vertices, triangles);
+  for (Slot& slot : slots_) slot.plane = plane_filter(slot.corners);
 }
 
 std::uint32_t AabbTree::sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
@@ -162,13 +189,13 @@ Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, st
   nodes_.push_back({});
   if (end - begin <= kLeafSize) {
     Box3 box;
-    nodes_[index].first_or_right = static_cast<std::uint32_t>(corners_.size());
+    nodes_[index].first_or_right = static_cast<std::uint32_t>(slots_.size());
     nodes_[index].count = end - begin;
     for (std::uint32_t k = begin; k < end; ++k) {
       const auto& tri = triangles[items[k].id];
-      corners_.push_back({vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]});
+      slots_.push_back({{vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]}, {}});
       triangle_ids_.push_back(items[k].id);
-      box.extend(triangle_box(corners_.back()));
+      box.extend(triangle_box(slots_.back().corners));
     }
     store_box(box, nodes_[index].bounds);
     return box;
@@ -236,6 +263,7 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     reach.lo[i] = is_ray ? (b[i] < a[i] ? -inf : a[i]) : std::min(a[i], b[i]);
     reach.hi[i] = is_ray ? (b[i] > a[i] ? inf : a[i]) : std::max(a[i], b[i]);
   }
+  const double a_size = a.cwiseAbs().maxCoeff(), b_size = b.cwiseAbs().maxCoeff();  // for plane_filter
   const auto may_hit = [&](std::uint32_t i) {
     const Node& n = nodes_[i];
     return reach.overlaps(n.box()) && slab.may_hit(n.bounds);
@@ -255,7 +283,16 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
       continue;
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
-      const auto& t = corners_[slot];
+      if (!is_ray) {
+        // Both ends strictly on one side of the plane: no hit (plane_filter). Cheaper than the
+        // box, and it rejects what boxes cannot: big triangles whose box holds the segment.
+        const Plane& plane = slots_[slot].plane;
+        const double sa = plane.normal.dot(a) - plane.offset, sb = plane.normal.dot(b) - plane.offset;
+        const double ea = plane.error_factor * a_size + plane.error_constant;
+        const double eb = plane.error_factor * b_size + plane.error_constant;
+        if ((sa > ea && sb > eb) || (sa < -ea && sb < -eb)) continue;
+      }
+      const auto& t = slots_[slot].corners;
       // The triangle's own box first: a few flops that spare most exact tests in the leaf.
       const Box3 box = triangle_box(t);
       if (!slab.may_hit(std::array<double, 6>{box.lo.x(), box.lo.y(), box.lo.z(), box.hi.x(), box.hi.y(), box.hi.z()}))
@@ -308,7 +345,7 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
       continue;
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
-      const auto& t = corners_[slot];
+      const auto& t = slots_[slot].corners;
       const ClosestOnTriangle c = closest_point_on_triangle(p, t[0], t[1], t[2]);
       const double d2 = (c.point - p).squaredNorm();
       if (d2 < best.squared_distance) best = {triangle_ids_[slot], c.point, d2};
@@ -332,7 +369,7 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
       continue;
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot)
-      if (triangle_box(corners_[slot]).overlaps(box)) out.push_back(triangle_ids_[slot]);
+      if (triangle_box(slots_[slot].corners).overlaps(box)) out.push_back(triangle_ids_[slot]);
   }
 }
 
@@ -349,7 +386,7 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
     const Node &a = nodes_[i], &b = nodes_[j];
     if (i == j) {
       if (is_leaf(i)) {
-        for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(corners_[a.first_or_right + s]);
+        for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(slots_[a.first_or_right + s].corners);
         for (std::uint32_t s = 0; s < a.count; ++s)
           for (std::uint32_t t = s + 1; t < a.count; ++t)
             if (boxes[s].overlaps(boxes[t])) f(triangle_ids_[a.first_or_right + s], triangle_ids_[a.first_or_right + t]);
@@ -362,8 +399,8 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
       continue;
     }
     if (is_leaf(i) && is_leaf(j)) {
-      for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(corners_[a.first_or_right + s]);
-      for (std::uint32_t t = 0; t < b.count; ++t) boxes[kLeafSize + t] = triangle_box(corners_[b.first_or_right + t]);
+      for (std::uint32_t s = 0; s < a.count; ++s) boxes[s] = triangle_box(slots_[a.first_or_right + s].corners);
+      for (std::uint32_t t = 0; t < b.count; ++t) boxes[kLeafSize + t] = triangle_box(slots_[b.first_or_right + t].corners);
       for (std::uint32_t s = 0; s < a.count; ++s)
         for (std::uint32_t t = 0; t < b.count; ++t)
           if (boxes[s].overlaps(boxes[kLeafSize + t]))

@@ -18,7 +18,7 @@
 // kernel::intersect_segment_triangle. A segment through an edge shared by two triangles is
 // reported by both, with kind edge.
 //
-// Cost: building O(n log n) time, about 130 bytes per triangle. A segment query costs
+// Cost: building O(n log n) time, about 180 bytes per triangle. A segment query costs
 // O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
 // through dense regions: it visits every leaf whose box the segment meets). Queries are const
 // and thread-safe; they append to caller-provided vectors so loops need not allocate.
@@ -162,12 +162,25 @@ class AabbTree {
   static std::uint32_t sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
                                  float lo, float hi, int depth, std::span<const Vec3> vertices,
                                  std::span<const std::array<std::uint32_t, 3>> triangles);
+  struct Plane;
+  static Plane plane_filter(const std::array<Vec3, 3>& t);
   void intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
                       std::vector<TriangleIntersection>& out) const;
 
   std::vector<Node> nodes_;
   Box3 bounds_;
-  std::vector<std::array<Vec3, 3>> corners_;    // triangle corners in leaf order
+  /// A triangle's plane as a floating-point filter (plane_filter in the .cpp): normal, offset,
+  /// and the error bound's factor and constant.
+  struct Plane {
+    Vec3 normal = Vec3::Zero();
+    double offset = 0, error_factor = 0, error_constant = 0;
+  };
+  /// One triangle in leaf order: its corners and plane side by side, read together by a query.
+  struct Slot {
+    std::array<Vec3, 3> corners;
+    Plane plane;
+  };
+  std::vector<Slot> slots_;
   std::vector<std::uint32_t> triangle_ids_;     // original id of each slot
 };
 

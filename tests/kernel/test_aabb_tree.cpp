@@ -175,6 +175,52 @@ TEST_CASE("segments exactly through grid edges and vertices lose no triangle") {
   for (const auto& h : hits) CHECK(h.hit.feature.kind == FeatureKind::vertex);
 }
 
+// The plane filter of the tree's leaves rejects a triangle when both ends of the segment are
+// clearly on one side of its plane. Segments ending on the triangle (within the rounding of a
+// barycentric point), or with both ends a few ulps off its plane on the same side, are where a
+// filter with too small an error bound would lose a hit: far from the origin, at small scale
+// (not below 2^-280, where the exact predicates' own products underflow, predicates.h).
+TEST_CASE("the plane filter loses no triangle a segment touches, however close to its plane") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1), w(-1, 1);
+  std::size_t total = 0;
+  for (const double offset : {0.0, 1e6, -3e9})
+    for (const double scale : {1.0, 1e-3, 1e-40}) {
+      Soup s;
+      for (int i = 0; i < 40; ++i) {
+        const Vec3 c = Vec3::Constant(offset) + scale * Vec3(u(rng), u(rng), u(rng));
+        const auto base = static_cast<std::uint32_t>(s.vertices.size());
+        for (int k = 0; k < 3; ++k) s.vertices.push_back(c + 0.5 * scale * Vec3(w(rng), w(rng), w(rng)));
+        s.triangles.push_back({base, base + 1, base + 2});
+      }
+      const AabbTree tree(s.vertices, s.triangles);
+      for (int q = 0; q < 300; ++q) {
+        const auto& t = s.triangles[static_cast<std::size_t>(rng() % s.triangles.size())];
+        const Vec3 &p0 = s.vertices[t[0]], &p1 = s.vertices[t[1]], &p2 = s.vertices[t[2]];
+        const double l0 = u(rng), l1 = u(rng) * (1 - l0);
+        const Vec3 on = p0 + l0 * (p1 - p0) + l1 * (p2 - p0);  // on the triangle up to rounding
+        const Vec3 n = (p1 - p0).cross(p2 - p0).normalized();
+        const Vec3 d = scale * Vec3(w(rng), w(rng), w(rng));
+        const double ulps = std::abs(on.cwiseAbs().maxCoeff()) * 0x1p-50;
+        const std::array<std::pair<Vec3, Vec3>, 4> segments{{
+            {on, on + d},                                  // one end on it
+            {on - d, on + d},                              // through it
+            {on + ulps * n, on + 3 * ulps * n + 1e-3 * d},  // both a few ulps off, one side
+            {on - 2 * ulps * n, on + 2 * ulps * n},        // a few ulps either side
+        }};
+        for (const auto& [a, b] : segments) {
+          std::vector<TriangleIntersection> hits;
+          tree.intersect_segment(a, b, hits);
+          const auto got = ids_of(hits);
+          const auto want = brute_segment(s, a, b);
+          CHECK(got == want);
+          total += got.size();
+        }
+      }
+    }
+  CHECK(total > 3000);  // most of these segments do touch their triangle: not vacuous
+}
+
 TEST_CASE("closest point equals brute force") {
   std::mt19937_64 rng(99);
   const Soup s = random_soup(rng, 2000, 0.03);
