@@ -103,8 +103,10 @@ static_assert(AabbTree::kSahDepth + 33 <= kStackSize, "the traversal stack must 
 // absolute 2^-1000 for results near the subnormal range. When both ends have |s| above the bound
 // and the same sign, V has that sign at both ends, so the segment misses the plane and the
 // triangle. A degenerate triangle (V = 0 everywhere) never passes; a triangle with tiny or huge
-// coordinates (U V outside [2^-900, 2^900]) gets an infinite bound, i.e. no filter; an infinite
-// or NaN s fails the comparisons. Only the caller's exact test decides a hit.
+// coordinates (U V outside [2^-900, 2^900]) gets an infinite bound, i.e. no filter; and the
+// filter acts only when both values of s are finite, since an overflow in n . x or in the offset
+// n . p (possible within those limits, e.g. |p| ~ 2^300 with U V ~ 2^900) leaves an infinity in
+// s with a finite bound. Only the caller's exact test decides a hit.
 AabbTree::Plane AabbTree::plane_filter(const std::array<Vec3, 3>& t) {
   Plane plane;
   const Vec3 u = t[1] - t[0], v = t[2] - t[0];
@@ -290,7 +292,9 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
         const double sa = plane.normal.dot(a) - plane.offset, sb = plane.normal.dot(b) - plane.offset;
         const double ea = plane.error_factor * a_size + plane.error_constant;
         const double eb = plane.error_factor * b_size + plane.error_constant;
-        if ((sa > ea && sb > eb) || (sa < -ea && sb < -eb)) continue;
+        // Finite values only: an overflow anywhere (n . x, or the offset n . p) leaves an
+        // infinity or NaN in s, outside the error analysis.
+        if (std::isfinite(sa) && std::isfinite(sb) && ((sa > ea && sb > eb) || (sa < -ea && sb < -eb))) continue;
       }
       const auto& t = slots_[slot].corners;
       // The triangle's own box first: a few flops that spare most exact tests in the leaf.

@@ -132,6 +132,7 @@ void RestrictedFacets::examine(Facet f) {
     ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
     return;
   }
+  ++queries_;
   if (e.is_ray)
     domain_->intersect_ray(e.source, e.direction, hits_);
   else

@@ -190,7 +190,17 @@ TEST_CASE("the plane filter loses no triangle a segment touches, however close t
       for (int i = 0; i < 40; ++i) {
         const Vec3 c = Vec3::Constant(offset) + scale * Vec3(u(rng), u(rng), u(rng));
         const auto base = static_cast<std::uint32_t>(s.vertices.size());
-        for (int k = 0; k < 3; ++k) s.vertices.push_back(c + 0.5 * scale * Vec3(w(rng), w(rng), w(rng)));
+        if (i % 2 == 0) {
+          for (int k = 0; k < 3; ++k) s.vertices.push_back(c + 0.5 * scale * Vec3(w(rng), w(rng), w(rng)));
+        } else {
+          // A needle: |u x v| far below |u| |v|, where the error of the normal (the 4 U V term
+          // of the bound) dominates that of the dot products.
+          const Vec3 d = scale * Vec3(w(rng), w(rng), w(rng));
+          const double thin = std::ldexp(1.0, -10 - static_cast<int>(rng() % 30));
+          s.vertices.push_back(c);
+          s.vertices.push_back(c + d);
+          s.vertices.push_back(c + u(rng) * d + thin * scale * Vec3(w(rng), w(rng), w(rng)));
+        }
         s.triangles.push_back({base, base + 1, base + 2});
       }
       const AabbTree tree(s.vertices, s.triangles);
@@ -200,6 +210,7 @@ TEST_CASE("the plane filter loses no triangle a segment touches, however close t
         const double l0 = u(rng), l1 = u(rng) * (1 - l0);
         const Vec3 on = p0 + l0 * (p1 - p0) + l1 * (p2 - p0);  // on the triangle up to rounding
         const Vec3 n = (p1 - p0).cross(p2 - p0).normalized();
+        if (!n.allFinite()) continue;
         const Vec3 d = scale * Vec3(w(rng), w(rng), w(rng));
         const double ulps = std::abs(on.cwiseAbs().maxCoeff()) * 0x1p-50;
         const std::array<std::pair<Vec3, Vec3>, 4> segments{{
