@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/kernel/predicates.h>
@@ -16,6 +18,12 @@ RestrictedFacets::RestrictedFacets(const delaunay::RegularTriangulation& dt, con
     : dt_(&dt), domain_(&domain), box_(domain.bounding_box()) {}
 
 void RestrictedFacets::exclude_vertices(std::span<const PointId> points) {
+  // Validated first: a stray id (kNoPoint, say) would otherwise size the table to 4 GB.
+  for (const PointId p : points)
+    if (p >= dt_->number_of_points())
+      throw std::invalid_argument("RestrictedFacets::exclude_vertices: " + std::to_string(p) +
+                                  " is no point of the triangulation (" +
+                                  std::to_string(dt_->number_of_points()) + " points)");
   for (const PointId p : points) {
     if (excluded_.size() <= p) excluded_.resize(p + 1, 0);
     excluded_[p] = 1;

@@ -78,7 +78,8 @@ class RestrictedFacets {
   /// Facets with one of these points as a vertex are never examined and never restricted: for
   /// points whose power cells are known to miss the domain (the mesher's far frame points), whose
   /// facets' dual edges are the longest and costliest queries (~20% of them on a convex model).
-  /// Call before rebuild(); ids of points not yet inserted are allowed.
+  /// Call before rebuild(). Throws std::invalid_argument for an id that is no point of the
+  /// triangulation (>= number_of_points()). O(number_of_points()) memory, one byte each.
   void exclude_vertices(std::span<const PointId> points);
   /// Examines every finite facet once (initialisation only). Appends every vertex of a
   /// restricted facet to `touched`. Calls `tick` (if any) every 2^16 cells, for a progress line.

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include <delpsc/io/shapes.h>
@@ -24,14 +25,40 @@ Vec3 on_cube(std::mt19937_64& rng) {
   return p;
 }
 
+// Far frame points, as the mesher uses (their power cells miss the cube); their ids.
+std::vector<delaunay::PointId> insert_frame(delaunay::RegularTriangulation& dt) {
+  std::vector<delaunay::PointId> frame;
+  for (int i = 0; i < 8; ++i)
+    frame.push_back(dt.insert(WeightedPoint::from(Vec3(i & 1 ? 4.0 : -3.0, i & 2 ? 4.0 : -3.0, i & 4 ? 4.0 : -3.0))));
+  return frame;
+}
+
+// `count` insertions on the cube, each followed by update(); every `check_every` (0: never), the
+// records are compared with a fresh scan.
+void insert_and_follow(delaunay::RegularTriangulation& dt, const refine::Domain& domain,
+                       refine::RestrictedFacets& facets, std::mt19937_64& rng, int count, int check_every) {
+  delaunay::ChangeSet changes;
+  std::vector<delaunay::PointId> touched;
+  for (int i = 0; i < count; ++i) {
+    const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
+    if (dt.status(id) != delaunay::PointStatus::vertex) continue;
+    touched.clear();
+    facets.update(changes, touched, id);
+    if (check_every > 0 && i % check_every == 0) {
+      const auto problems = refine::check_restricted_facets(dt, domain, facets);
+      for (const auto& p : problems) INFO(p);
+      CHECK(problems.empty());
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed update is caught") {
   const refine::PolygonDomain domain(io::make_cube(2));
   delaunay::RegularTriangulation dt;
-  // Far frame points, as the mesher uses, then a coarse sample of the surface.
-  for (int i = 0; i < 8; ++i)
-    dt.insert(WeightedPoint::from(Vec3(i & 1 ? 4.0 : -3.0, i & 2 ? 4.0 : -3.0, i & 4 ? 4.0 : -3.0)));
+  // The frame, then a coarse sample of the surface.
+  insert_frame(dt);
   std::mt19937_64 rng(3);
   for (int i = 0; i < 60; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
   refine::RestrictedFacets facets(dt, domain);
@@ -41,21 +68,11 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
 
   // Insertions followed by update(): the incremental records stay those of a full scan.
-  delaunay::ChangeSet changes;
-  for (int i = 0; i < 400; ++i) {
-    const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
-    if (dt.status(id) != delaunay::PointStatus::vertex) continue;
-    touched.clear();
-    facets.update(changes, touched, id);
-    if (i % 40 == 0) {
-      const auto problems = refine::check_restricted_facets(dt, domain, facets);
-      for (const auto& p : problems) INFO(p);
-      CHECK(problems.empty());
-    }
-  }
+  insert_and_follow(dt, domain, facets, rng, 400, 40);
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
 
   // One insertion the records do not follow: the new point's restricted facets are missing.
+  delaunay::ChangeSet changes;
   const delaunay::PointId id = dt.insert(WeightedPoint::from(Vec3(0.5, 0.5, 0.0)), &changes);
   REQUIRE(dt.status(id) == delaunay::PointStatus::vertex);
   CHECK_FALSE(refine::check_restricted_facets(dt, domain, facets).empty());
@@ -67,9 +84,7 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
 TEST_CASE("excluded frame points: no facet through them is examined, and the records still equal a fresh scan") {
   const refine::PolygonDomain domain(io::make_cube(2));
   delaunay::RegularTriangulation dt;
-  std::vector<delaunay::PointId> frame;
-  for (int i = 0; i < 8; ++i)
-    frame.push_back(dt.insert(WeightedPoint::from(Vec3(i & 1 ? 4.0 : -3.0, i & 2 ? 4.0 : -3.0, i & 4 ? 4.0 : -3.0))));
+  const std::vector<delaunay::PointId> frame = insert_frame(dt);
   std::mt19937_64 rng(5);
   for (int i = 0; i < 200; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
   refine::RestrictedFacets facets(dt, domain), all(dt, domain);
@@ -83,13 +98,7 @@ TEST_CASE("excluded frame points: no facet through them is examined, and the rec
   CHECK(facets.queries() + 100 < all.queries());
   CHECK(facets.size() == all.size());
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
-  delaunay::ChangeSet changes;
-  for (int i = 0; i < 200; ++i) {
-    const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
-    if (dt.status(id) != delaunay::PointStatus::vertex) continue;
-    touched.clear();
-    facets.update(changes, touched, id);
-  }
+  insert_and_follow(dt, domain, facets, rng, 200, 0);
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
 
   // Excluding a point on the surface does drop its restricted facets, and the check sees it.
@@ -101,4 +110,8 @@ TEST_CASE("excluded frame points: no facet through them is examined, and the rec
   wrong.rebuild(touched);
   CHECK(wrong.incident(on_surface).empty());
   CHECK_FALSE(refine::check_restricted_facets(dt, domain, wrong).empty());
+
+  // A stray id is refused, not taken as a table size.
+  const std::vector<delaunay::PointId> stray{delaunay::kNoPoint};
+  CHECK_THROWS_AS(wrong.exclude_vertices(stray), std::invalid_argument);
 }
