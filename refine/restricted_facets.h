@@ -142,7 +142,11 @@ class RestrictedFacets {
   /// Appends to `touched` the vertices of the (triangle, patch) pairs in gone_ or made_ but not
   /// both, and empties them.
   void touch_changed(std::vector<PointId>& touched);
-  void project_on_facet_line(const std::array<PointId, 3>& t, delaunay::VoronoiEdge& e) const;
+  /// The dual edge of finite facet f, whose vertices are t (sorted), computed on t's line from
+  /// t's orthocentre (precondition: both cells finite). An end is not finite when a cell is flat.
+  delaunay::VoronoiEdge dual_on_facet_line(delaunay::Facet f, const std::array<PointId, 3>& t) const;
+  /// The same from the cells' orthocentres (dual()), projected on t's line: for flat cells.
+  delaunay::VoronoiEdge dual_projected(delaunay::Facet f, const std::array<PointId, 3>& t) const;
   /// Examines finite facet f (its dual edge against the domain) and records it on both sides.
   void examine(delaunay::Facet f);
   bool well_conditioned(delaunay::Facet f) const;
