@@ -84,9 +84,9 @@ void initial_sample(benchmark::State& state, const Model& m) {
   for (auto _ : state) {
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
-    m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
+    const std::size_t cover = m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
     candidates = points.size();
-    chosen = refine::select_separated_points(points, balls, {}, m.lambda).size();
+    chosen = refine::select_sample(points, cover, balls, {}, m.lambda).size();
   }
   state.counters["candidates"] = static_cast<double>(candidates);
   state.counters["chosen"] = static_cast<double>(chosen);

@@ -107,12 +107,14 @@ class Domain {
   /// Appends candidate points for the mesher's initial sample (initial_sample.h) to `points`,
   /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and
   /// spread evenly over it (the mesher keeps ~1 in 6; a gap is no error, refinement fills it);
-  /// the same points on every call. None at all when they would be more than `budget`. The
-  /// default appends none: the mesher then starts from the balls and the seeds alone, as the
-  /// paper does.
-  virtual void surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
+  /// the same points on every call. None at all when they would be more than `budget`. Returns
+  /// how many of the appended points, at the front, form a cover to be chosen from first
+  /// (select_sample; 0: none). The default appends none: the mesher then starts from the balls
+  /// and the seeds alone, as the paper does.
+  virtual std::size_t surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
                                   std::vector<std::uint32_t>& patches) const {
     (void)spacing, (void)budget, (void)points, (void)patches;
+    return 0;
   }
 };
 

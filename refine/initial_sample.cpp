@@ -162,4 +162,22 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
   return chosen;
 }
 
+std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, std::size_t cover,
+                                         std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
+                                         double spacing, std::span<const double> local_spacing) {
+  cover = std::min(cover, candidates.size());
+  const bool local = !local_spacing.empty();
+  if (local && local_spacing.size() != candidates.size()) return {};
+  const auto part = [&](std::size_t from, std::size_t count) {
+    return local ? local_spacing.subspan(from, count) : std::span<const double>{};
+  };
+  std::vector<std::uint32_t> chosen = select_separated_points(candidates.first(cover), balls, fixed, spacing, part(0, cover));
+  std::vector<Vec3> blockers(fixed.begin(), fixed.end());
+  for (const std::uint32_t i : chosen) blockers.push_back(candidates[i]);
+  const std::size_t rest = candidates.size() - cover;
+  for (const std::uint32_t i : select_separated_points(candidates.subspan(cover), balls, blockers, spacing, part(cover, rest)))
+    chosen.push_back(static_cast<std::uint32_t>(i + cover));
+  return chosen;
+}
+
 }  // namespace delpsc::refine

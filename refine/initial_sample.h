@@ -33,4 +33,13 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
                                                    std::span<const Vec3> fixed, double spacing,
                                                    std::span<const double> local_spacing = {});
 
+/// The initial sample from Domain::surface_candidates: its first `cover` candidates (a lattice
+/// that covers the big triangles, surface_lattice.h) are selected first, then the others with
+/// the lattice's chosen points among the fixed ones, so that random candidates only fill the
+/// lattice's gaps. Each chosen point still passes select_separated_points' test against all
+/// points chosen before it. Indices into `candidates`; `local_spacing` as there.
+std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, std::size_t cover,
+                                         std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
+                                         double spacing, std::span<const double> local_spacing = {});
+
 }  // namespace delpsc::refine

@@ -139,7 +139,7 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   // cap and are not even made (a size far too small for the cap would otherwise exhaust memory
   // here, at ~50 bytes a candidate); fewer may still not fit, which is checked below.
   const std::size_t budget = options_.max_vertices > 0 ? 8 * options_.max_vertices : 0xffffffffu;
-  domain_->surface_candidates(options_.facet_size, budget, candidates, patches);
+  const std::size_t cover = domain_->surface_candidates(options_.facet_size, budget, candidates, patches);
   std::vector<WeightedPoint> balls;
   for (const BallKey k : keys) {
     const ProtectingBall b = balls_->ball(k);
@@ -156,7 +156,7 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
       // else 0 (also for NaN): the candidate is skipped; FacetCriteria reports a bad sizing
   }
   const std::vector<std::uint32_t> chosen =
-      select_separated_points(candidates, balls, fixed, options_.facet_size, local);
+      select_sample(candidates, cover, balls, fixed, options_.facet_size, local);
   // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.

@@ -1,12 +1,15 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
 #include <delpsc/io/shapes.h>
+#include <delpsc/kernel/constructions.h>
 #include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/polygon_domain.h>
+#include <delpsc/refine/surface_lattice.h>
 
 using namespace delpsc;
 
@@ -108,36 +111,161 @@ TEST_CASE("select_separated_points: degenerate input") {
   CHECK(refine::select_separated_points(ring, big, {}, 0.5) == std::vector<std::uint32_t>{2});  // 4.41 - 4 > 0.25
 }
 
-TEST_CASE("PolygonDomain::surface_candidates lie on their patches at the asked density") {
-  const refine::PolygonDomain domain(io::make_cube(4));  // unit cube, six patches
+TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice first, random points near edges") {
+  const refine::PolygonDomain domain(io::make_cube(1));  // unit cube, six patches, 12 triangles
   const double spacing = 0.05;
   std::vector<Vec3> points;
   std::vector<std::uint32_t> patches;
-  domain.surface_candidates(spacing, 1u << 30, points, patches);
+  const std::size_t cover = domain.surface_candidates(spacing, 1u << 30, points, patches);
   REQUIRE(points.size() == patches.size());
-  const double expected = 6 * 4 / (spacing * spacing);  // area 6, 4 per spacing²
-  CHECK(std::abs(static_cast<double>(points.size()) - expected) < 0.05 * expected);
+  // The lattice: area 6 at 2 / (√3 step²) per unit area.
+  const double step = refine::kLatticeStep * spacing;
+  const double lattice_expected = 6 * 2 / (std::sqrt(3.0) * step * step);
+  CHECK(std::abs(static_cast<double>(cover) - lattice_expected) < 0.05 * lattice_expected);
+  // Random candidates at 4 per spacing², only within ~2.5 spacings of a triangle's edge: their
+  // count is the band's share of the area, well under the whole area's.
+  const double random_everywhere = 6 * 4 / (spacing * spacing);
+  const std::size_t random = points.size() - cover;
+  CHECK(static_cast<double>(random) > 0.5 * random_everywhere);
+  CHECK(static_cast<double>(random) < 0.8 * random_everywhere);
   std::vector<std::size_t> per_patch(domain.patch_count(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto c = domain.closest_point(points[i]);
-    REQUIRE(c);
-    CHECK(c->squared_distance < 1e-28);
+    const auto nearest = domain.closest_point(points[i]);
+    REQUIRE(nearest);
+    CHECK(nearest->squared_distance < 1e-28);
     REQUIRE(patches[i] < domain.patch_count());
     ++per_patch[patches[i]];
+    if (i < cover) continue;
+    // A random candidate lies in the band of its triangle: within 2.5 spacings of one of its
+    // edges, give or take a stratum (the triangle's longest edge over the strata per side).
+    bool in_band = false;
+    for (const auto& tri : domain.complex().triangles) {
+      const Vec3 &a = domain.complex().vertices[tri[0]], &b = domain.complex().vertices[tri[1]],
+                 &c = domain.complex().vertices[tri[2]];
+      if ((kernel::closest_point_on_triangle(points[i], a, b, c).point - points[i]).squaredNorm() > 1e-28) continue;
+      const double area = 0.5 * (b - a).cross(c - a).norm();
+      const double per_side = std::ceil(std::sqrt(4 * area / (spacing * spacing)));
+      const double stratum = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / per_side;
+      double edge = HUGE_VAL;
+      for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
+        edge = std::min(edge, (kernel::closest_point_on_segment(points[i], p, q).point - points[i]).norm());
+      in_band |= edge <= 2.5 * spacing + stratum + 1e-12;
+    }
+    CHECK(in_band);
   }
-  for (const std::size_t n : per_patch) CHECK(std::abs(static_cast<double>(n) - expected / 6) < 0.1 * expected / 6);
+  for (const std::size_t n : per_patch) CHECK(static_cast<double>(n) > 0.1 * static_cast<double>(points.size()));
   // The same points on every call; nothing for a spacing that is not a length.
   std::vector<Vec3> again;
   std::vector<std::uint32_t> again_patches;
-  domain.surface_candidates(spacing, 1u << 30, again, again_patches);
+  CHECK(domain.surface_candidates(spacing, 1u << 30, again, again_patches) == cover);
   CHECK(again == points);
   std::vector<Vec3> none;
-  domain.surface_candidates(0, 1u << 30, none, again_patches);
-  domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches);
+  CHECK(domain.surface_candidates(0, 1u << 30, none, again_patches) == 0);
+  CHECK(domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches) == 0);
   CHECK(none.empty());
-  // More than the budget: none at all (~9,600 expected here).
-  domain.surface_candidates(spacing, 9000, none, again_patches);
+  // More than the budget: none at all (~9,600 random and ~1,400 lattice points budgeted here).
+  CHECK(domain.surface_candidates(spacing, 10000, none, again_patches) == 0);
   CHECK(none.empty());
-  domain.surface_candidates(spacing, 10000, none, again_patches);
+  domain.surface_candidates(spacing, 11500, none, again_patches);
   CHECK(!none.empty());
+}
+
+namespace {
+
+// Every point of `probes` within `radius` of a point of `points` (brute force).
+std::size_t uncovered(const std::vector<Vec3>& probes, const std::vector<Vec3>& points, double radius) {
+  std::size_t out = 0;
+  for (const Vec3& q : probes)
+    out += std::none_of(points.begin(), points.end(), [&](const Vec3& p) { return (p - q).norm() <= radius; });
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across coplanar triangles") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double step = 0.1, jitter = 0.012;
+  const double cover_radius = step / std::sqrt(3.0) + jitter;
+  for (int round = 0; round < 4; ++round) {
+    // A slanted unit square far from the origin, as two triangles sharing its diagonal.
+    const Vec3 origin(100 * u(rng) - 50, 100 * u(rng) - 50, 100 * u(rng) - 50);
+    const Vec3 e1 = Vec3(u(rng), u(rng), u(rng)).normalized();
+    const Vec3 e2 = e1.cross(Vec3(u(rng), u(rng), u(rng))).normalized();
+    const Vec3 a = origin, b = origin + e1, c = origin + e1 + e2, d = origin + e2;
+    std::vector<Vec3> first, second;
+    refine::jittered_lattice(a, b, c, step, jitter, first);
+    refine::jittered_lattice(a, c, d, step, jitter, second);  // the same plane: the same lattice
+    // On its triangle (barycentric coordinates in [0, 1] up to rounding), ~0.5 / (√3/2 step²) each.
+    for (const Vec3& p : first) {
+      const double x = (p - a).dot(e1), y = (p - a).dot(e2), off = std::abs((p - a).dot(e1.cross(e2)));
+      CHECK(off < 1e-12);
+      CHECK(y <= x + 1e-12);
+      CHECK(x <= 1 + 1e-12);
+      CHECK(y >= -1e-12);
+    }
+    const double expected = 0.5 / (std::sqrt(3.0) / 2 * step * step);
+    CHECK(std::abs(static_cast<double>(first.size()) - expected) < 0.1 * expected);
+    // Spaced: at least step - 2 jitter apart, but for the points on the shared diagonal, which
+    // both triangles make (the same point up to rounding).
+    std::vector<Vec3> all(first);
+    all.insert(all.end(), second.begin(), second.end());
+    std::size_t duplicates = 0;
+    for (std::size_t i = 0; i < all.size(); ++i)
+      for (std::size_t j = i + 1; j < all.size(); ++j) {
+        const double dist = (all[i] - all[j]).norm();
+        if (dist < 1e-9) {
+          ++duplicates;
+          CHECK((i < first.size()) != (j < first.size()));
+        } else {
+          CHECK(dist >= step - 2 * jitter - 1e-12);
+        }
+      }
+    CHECK(duplicates < 4);
+    // Covering: every point of the square farther than the cover radius from its border is
+    // within the cover radius of the union - no seam along the diagonal.
+    std::vector<Vec3> probes;
+    for (int k = 0; k < 3000; ++k) {
+      const double x = cover_radius + (1 - 2 * cover_radius) * u(rng), y = cover_radius + (1 - 2 * cover_radius) * u(rng);
+      probes.push_back(a + x * e1 + y * e2);
+    }
+    CHECK(uncovered(probes, all, cover_radius) == 0);
+    // The bound is tight enough to mean something: at 0.9 of it, some probes are left out.
+    CHECK(uncovered(probes, all, 0.9 * cover_radius) > 0);
+  }
+  // Nothing for a degenerate triangle or an impossible step.
+  std::vector<Vec3> none;
+  refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), step, jitter, none);
+  refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 0, 0, none);
+  refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, step, none);
+  CHECK(none.empty());
+}
+
+TEST_CASE("select_sample leaves no hole away from the edges of a cube's faces") {
+  // The lattice chosen first covers each face but near its border and diagonal; random
+  // candidates fill there. Every point of a face 3 spacings from its border is then within the
+  // spacing of a chosen point: step 2(b) finds no restricted facet larger than the spacing there.
+  const refine::PolygonDomain domain(io::make_cube(4));
+  const double spacing = 0.05;
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> patches;
+  const std::size_t cover = domain.surface_candidates(spacing, 1u << 30, points, patches);
+  const std::vector<Vec3> fixed{{0.5, 0.5, 0}};
+  const auto chosen = refine::select_sample(points, cover, {}, fixed, spacing);
+  check_selection(points, {}, fixed, spacing, chosen);  // the order: the lattice's points first
+  std::vector<Vec3> sample(fixed);
+  for (const std::uint32_t i : chosen) sample.push_back(points[i]);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(3 * spacing, 1 - 3 * spacing);
+  std::vector<Vec3> probes;
+  for (int k = 0; k < 2000; ++k) {
+    Vec3 p(u(rng), u(rng), u(rng));
+    p[k % 3] = (k / 3) % 2;  // on a face
+    probes.push_back(p);
+  }
+  CHECK(uncovered(probes, sample, spacing) == 0);
+  // Random candidates filled in near the edges, after every lattice point.
+  const auto first_random = std::find_if(chosen.begin(), chosen.end(), [&](std::uint32_t i) { return i >= cover; });
+  CHECK(first_random != chosen.end());
+  CHECK(std::all_of(first_random, chosen.end(), [&](std::uint32_t i) { return i >= cover; }));
 }

@@ -1,0 +1,97 @@
+#include "surface_lattice.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <delpsc/kernel/bits.h>
+
+namespace delpsc::refine {
+
+namespace {
+
+struct Point2 {
+  double x, y;
+};
+
+// The x-range of the triangle's part in the strip lo <= y <= hi (Sutherland-Hodgman against the
+// strip's two lines); empty (x0 > x1) when the strip misses it.
+std::array<double, 2> strip_range(const std::array<Point2, 3>& t, double lo, double hi) {
+  std::array<Point2, 5> a{}, b{};
+  std::size_t na = 3, nb = 0;
+  std::copy(t.begin(), t.end(), a.begin());
+  const auto clip = [&](double level, double sign) {  // keeps sign * (y - level) >= 0
+    nb = 0;
+    for (std::size_t k = 0; k < na; ++k) {
+      const Point2 p = a[k], q = a[(k + 1) % na];
+      const double dp = sign * (p.y - level), dq = sign * (q.y - level);
+      if (dp >= 0) b[nb++] = p;
+      if ((dp < 0) != (dq < 0) && nb < b.size()) b[nb++] = {p.x + (q.x - p.x) * (dp / (dp - dq)), level};
+    }
+    a = b;
+    na = nb;
+  };
+  clip(lo, 1);
+  if (na > 0) clip(hi, -1);
+  std::array<double, 2> range{HUGE_VAL, -HUGE_VAL};
+  for (std::size_t k = 0; k < na; ++k) {
+    range[0] = std::min(range[0], a[k].x);
+    range[1] = std::max(range[1], a[k].x);
+  }
+  return range;
+}
+
+}  // namespace
+
+void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, double jitter,
+                      std::vector<Vec3>& out) {
+  if (!(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return;
+  // The frame depends on the plane alone: the unit normal with its largest component positive,
+  // u across it and the coordinate axis it leans on least, the origin the plane's point nearest
+  // the coordinate origin.
+  Vec3 n = (b - a).cross(c - a).normalized();
+  if (!n.allFinite()) return;
+  int largest = 0, smallest = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::fabs(n[k]) > std::fabs(n[largest])) largest = k;
+    if (std::fabs(n[k]) < std::fabs(n[smallest])) smallest = k;
+  }
+  if (n[largest] < 0) n = -n;
+  const Vec3 u = n.cross(Vec3::Unit(smallest)).normalized();
+  const Vec3 v = n.cross(u);
+  const Vec3 origin = n.dot(a) * n;
+  const auto in_plane = [&](const Vec3& p) { return Point2{u.dot(p - origin), v.dot(p - origin)}; };
+  const std::array<Point2, 3> t{in_plane(a), in_plane(b), in_plane(c)};
+  const double det = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+  if (!(std::fabs(det) > 0)) return;
+  const double row = step * std::sqrt(3.0) / 2;
+  const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter;
+  const double yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
+  const auto first_row = static_cast<std::int64_t>(std::floor(ylo / row));
+  const auto last_row = static_cast<std::int64_t>(std::ceil(yhi / row));
+  for (std::int64_t j = first_row; j <= last_row; ++j) {
+    const double y0 = static_cast<double>(j) * row;
+    // Points of this row move by at most `jitter`: the triangle's part within it of the row.
+    const auto [x0, x1] = strip_range(t, y0 - jitter, y0 + jitter);
+    if (!(x0 <= x1)) continue;
+    const double shift = 0.5 * step * static_cast<double>(j & 1);  // odd rows half a step over
+    const auto first = static_cast<std::int64_t>(std::floor((x0 - jitter - shift) / step));
+    const auto last = static_cast<std::int64_t>(std::ceil((x1 + jitter - shift) / step));
+    for (std::int64_t i = first; i <= last; ++i) {
+      // The jitter, uniform in the disk of radius `jitter`, from the lattice index alone.
+      const std::uint64_t h = kernel::mix64(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull ^
+                                            static_cast<std::uint64_t>(j) * 0xc2b2ae3d27d4eb4full);
+      const double angle = static_cast<double>(h >> 40) * 0x1.0p-24 * 6.283185307179586;
+      const double radius = jitter * std::sqrt(static_cast<double>(h & 0xffffff) * 0x1.0p-24);
+      const double x = static_cast<double>(i) * step + shift + radius * std::cos(angle);
+      const double y = y0 + radius * std::sin(angle);
+      // Barycentric coordinates in the plane; the point is made from the triangle's own corners,
+      // so it lies on the triangle up to rounding.
+      const double s = ((x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (y - t[0].y)) / det;
+      const double r = ((t[1].x - t[0].x) * (y - t[0].y) - (x - t[0].x) * (t[1].y - t[0].y)) / det;
+      if (s >= 0 && r >= 0 && s + r <= 1) out.push_back(a + s * (b - a) + r * (c - a));
+    }
+  }
+}
+
+}  // namespace delpsc::refine
