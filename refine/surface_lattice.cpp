@@ -59,11 +59,23 @@ void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, 
   if (n[largest] < 0) n = -n;
   const Vec3 u = n.cross(Vec3::Unit(smallest)).normalized();
   const Vec3 v = n.cross(u);
-  const Vec3 origin = n.dot(a) * n;
+  const double offset = n.dot(a);
+  const Vec3 origin = offset * n;
+  // The jitter also depends on the plane's offset, quantised (coplanar triangles agree on it but
+  // in the ~1e-12 chance that rounding puts them on two sides of a quantum: a seam, no error).
+  // Without it two parallel planes, such as a cube's opposite faces, got translated copies of one
+  // pattern: rectangles of four co-circular points across the model, co-spherical sets whose
+  // power tests all fell to exact arithmetic (9% of meshing the cube).
+  const double quantum = std::floor(offset / (0.5 * step));
+  const auto plane_key = std::fabs(quantum) < 0x1.0p62 ? static_cast<std::uint64_t>(static_cast<std::int64_t>(quantum)) : 0;
   const auto in_plane = [&](const Vec3& p) { return Point2{u.dot(p - origin), v.dot(p - origin)}; };
   const std::array<Point2, 3> t{in_plane(a), in_plane(b), in_plane(c)};
   const double det = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
   if (!(std::fabs(det) > 0)) return;
+  // Lattice indices must stay exact integers in doubles (and fit the index type): a plane this
+  // far from the origin for its step gets no lattice (the random candidates still come).
+  for (const Point2& p : t)
+    if (!(std::max(std::fabs(p.x), std::fabs(p.y)) < 0x1.0p50 * step)) return;
   const double row = step * std::sqrt(3.0) / 2;
   const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter;
   const double yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
@@ -78,9 +90,10 @@ void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, 
     const auto first = static_cast<std::int64_t>(std::floor((x0 - jitter - shift) / step));
     const auto last = static_cast<std::int64_t>(std::ceil((x1 + jitter - shift) / step));
     for (std::int64_t i = first; i <= last; ++i) {
-      // The jitter, uniform in the disk of radius `jitter`, from the lattice index alone.
+      // The jitter, uniform in the disk of radius `jitter`, from the lattice index and plane.
       const std::uint64_t h = kernel::mix64(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull ^
-                                            static_cast<std::uint64_t>(j) * 0xc2b2ae3d27d4eb4full);
+                                            static_cast<std::uint64_t>(j) * 0xc2b2ae3d27d4eb4full ^
+                                            kernel::mix64(plane_key));
       const double angle = static_cast<double>(h >> 40) * 0x1.0p-24 * 6.283185307179586;
       const double radius = jitter * std::sqrt(static_cast<double>(h & 0xffffff) * 0x1.0p-24);
       const double x = static_cast<double>(i) * step + shift + radius * std::cos(angle);

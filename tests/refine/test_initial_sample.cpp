@@ -233,11 +233,22 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     // The bound is tight enough to mean something: at 0.9 of it, some probes are left out.
     CHECK(uncovered(probes, all, 0.9 * cover_radius) > 0);
   }
-  // Nothing for a degenerate triangle or an impossible step.
+  // Parallel planes get different jitters: the lattices of a cube's opposite faces were
+  // translates of each other, whose rectangles of co-circular points sent the triangulation's
+  // power tests to exact arithmetic.
+  std::vector<Vec3> bottom, top;
+  refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, jitter, bottom);
+  refine::jittered_lattice(Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1), step, jitter, top);
+  std::size_t translated = 0;
+  for (const Vec3& p : bottom)
+    translated += std::any_of(top.begin(), top.end(), [&](const Vec3& q) { return (q - p - Vec3(0, 0, 1)).norm() < 1e-12; });
+  CHECK(translated < bottom.size() / 10);
+  // Nothing for a degenerate triangle, an impossible step, or a plane too far for the step.
   std::vector<Vec3> none;
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), step, jitter, none);
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 0, 0, none);
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, step, none);
+  refine::jittered_lattice(Vec3(1e20, 0, 0), Vec3(2e20, 0, 0), Vec3(1e20, 1e20, 0), step, jitter, none);
   CHECK(none.empty());
 }
 
