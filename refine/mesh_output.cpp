@@ -19,13 +19,20 @@ io::SurfaceMesh Mesher::output() const {
     }
     return index[p];
   };
-  // Skl² per patch: every restricted (t, σ). Sorted for a deterministic output.
-  std::vector<std::pair<std::uint32_t, std::array<PointId, 3>>> triangles;
-  facets_.for_each([&](std::uint32_t, const RestrictedFacet& r) { triangles.emplace_back(r.patch, r.vertices); });
-  std::sort(triangles.begin(), triangles.end());
-  for (const auto& [patch, v] : triangles) {
-    mesh.triangles.push_back({vertex(v[0]), vertex(v[1]), vertex(v[2])});
-    mesh.triangle_patch.push_back(static_cast<std::int32_t>(patch));
+  // Skl² per patch: every restricted (t, σ), grouped by patch by a counting sort that keeps the
+  // records' order within a patch (the run is deterministic, so is that order; a full sort of
+  // the triangles was 1.8% of meshing the cube).
+  std::vector<std::uint32_t> start(domain_->patch_count() + 1, 0);
+  facets_.for_each([&](std::uint32_t, const RestrictedFacet& r) { ++start[r.patch + 1]; });
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<std::uint32_t> slots(start.back());
+  facets_.for_each([&](std::uint32_t slot, const RestrictedFacet& r) { slots[start[r.patch]++] = slot; });
+  mesh.triangles.reserve(slots.size());
+  mesh.triangle_patch.reserve(slots.size());
+  for (const std::uint32_t slot : slots) {
+    const RestrictedFacet& r = facets_[slot];
+    mesh.triangles.push_back({vertex(r.vertices[0]), vertex(r.vertices[1]), vertex(r.vertices[2])});
+    mesh.triangle_patch.push_back(static_cast<std::int32_t>(r.patch));
   }
   orient_triangles(mesh.vertices, mesh.triangles);
   // Skl¹: consecutive ball centres along each curve; Skl⁰: the corner balls.

@@ -263,12 +263,21 @@ double RestrictedFacets::order_key(double badness, const Vec3& x) const {
 }
 
 void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
+  auto touch = [&](const std::array<std::uint32_t, 4>& t) { touched.insert(touched.end(), t.begin(), t.begin() + 3); };
+  if (gone_.empty() || made_.empty()) {
+    // Nothing to cancel out (rebuild from an empty set: every record new): no sort needed
+    // (1.4% of meshing the cube when rebuild sorted its 110,000 records).
+    for (const auto& t : gone_) touch(t);
+    for (const auto& t : made_) touch(t);
+    gone_.clear();
+    made_.clear();
+    return;
+  }
   // The disk condition at v reads only the (triangle, patch) pairs incident to v: a facet
   // re-examined with the same outcome (the common case on the cavity's boundary) changes nothing.
   std::sort(gone_.begin(), gone_.end());
   std::sort(made_.begin(), made_.end());
   std::size_t i = 0, j = 0;
-  auto touch = [&](const std::array<std::uint32_t, 4>& t) { touched.insert(touched.end(), t.begin(), t.begin() + 3); };
   while (i < gone_.size() || j < made_.size()) {
     if (j == made_.size() || (i < gone_.size() && gone_[i] < made_[j]))
       touch(gone_[i++]);
