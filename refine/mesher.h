@@ -37,11 +37,11 @@
 // cost: the sample goes in as one spatially sorted batch and the restricted facets are computed
 // once, instead of ~40 dual-edge queries per point as facets are made and unmade level after
 // level (refinement -40 to -60% on the libcgal-demo models, 3-6% more vertices; BENCHMARKS.md);
-// step 2 then has ~1/6 of the insertions left. Candidates come from a jittered lattice on the
-// big triangles (surface_lattice.h), which covers them with no holes, chosen first, then random
-// points near edges and on small triangles (select_sample): step 2 is left with 1-5% of the
-// vertices to insert on models of big faces (cube, joint; 11-17% before), 8-17% on those of
-// small triangles (fandisk, elephant), and the meshes have 5-19% fewer vertices.
+// step 2 then has ~1/6 of the insertions left. Candidates come from a jittered lattice on each
+// cluster of nearly parallel triangles (surface_lattice.h, triangle_clusters.h), which covers it
+// with (almost) no holes, chosen first, then random points near the clusters' boundaries and on
+// clusters too small for a lattice (select_sample): step 2 is left with 0.2-9% of the vertices
+// to insert (11-17% with random candidates alone), and the meshes have 15-22% fewer vertices.
 // And 8 unweighted frame points
 // far outside the bounding box (3 diagonals away), which make the triangulation 3-dimensional
 // even for a flat sheet and keep removals legal. Their Voronoi cells never reach the domain

@@ -8,6 +8,7 @@
 #include <delpsc/kernel/bits.h>
 
 #include "surface_lattice.h"
+#include "triangle_clusters.h"
 
 namespace delpsc::refine {
 
@@ -28,6 +29,8 @@ struct CoplanarSpan {
   double t0, t1;
   Vec3 p0, p1;
 };
+
+
 
 }  // namespace
 
@@ -139,25 +142,36 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
   if (!(spacing > 0) || !std::isfinite(spacing)) return 0;
   const double per_area = 4.0 / (spacing * spacing);
   const double step = kLatticeStep * spacing, jitter = kLatticeJitter * spacing;
-  // A lattice on triangles of at least half a spacing² (smaller ones would get less than one
+  // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
   // lattice point each: random candidates serve them as well).
-  const double lattice_from = 2;  // expected random candidates, i.e. area spacing² / 2
+  const double band = 2.5 * spacing;
+  const TriangleClusters clusters = cluster_triangles(complex_, kClusterAngle, band);
+  std::vector<double> cluster_area(clusters.seed.size(), 0);
   std::vector<double> expected_in(complex_.triangles.size());
   double total = 0;
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
-    total += expected_in[t] = 0.5 * (b - a).cross(c - a).norm() * per_area;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    cluster_area[clusters.cluster_of[t]] += area;
+    total += expected_in[t] = area * per_area;
   }
   // The lattice adds ~1/7 of the random candidates' count where it is laid (below).
   if (!(total * 8 / 7 <= static_cast<double>(budget))) return 0;  // also when not finite
+  const auto has_lattice = [&](std::uint32_t t) { return cluster_area[clusters.cluster_of[t]] * per_area >= 2; };
+  std::vector<LatticeFrame> frames(clusters.seed.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const auto& tri = complex_.triangles[clusters.seed[k]];
+    const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
+    frames[k] = lattice_frame((b - a).cross(c - a), a, step);
+  }
 
-  // The lattice first, on the triangles big enough: the mesher chooses from it first.
+  // The lattice first: the mesher chooses from it first.
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
-    if (expected_in[t] < lattice_from) continue;
+    if (!has_lattice(t)) continue;
     const auto& tri = complex_.triangles[t];
-    jittered_lattice(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], step, jitter,
-                     points);
+    jittered_lattice(frames[clusters.cluster_of[t]], complex_.vertices[tri[0]], complex_.vertices[tri[1]],
+                     complex_.vertices[tri[2]], step, jitter, points);
     patches.resize(points.size(), complex_.triangle_patch[t]);
   }
   const std::size_t lattice = points.size();
@@ -172,6 +186,10 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
     const double expected = expected_in[t];
+    // Where the cluster has a lattice, random candidates only within ~2.5 spacings of its
+    // boundary (below): the lattice covers the rest.
+    const bool lattice_here = has_lattice(t);
+    if (lattice_here && clusters.distance[t] > band) continue;
     const auto emit = [&](double u, double v) {  // lattice coordinates, u + v <= 1
       points.push_back(a + u * (b - a) + v * (c - a));
       patches.push_back(complex_.triangle_patch[t]);
@@ -193,13 +211,16 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
     // edge since curves run along edges), plus the cover radius 0.96 spacing: 2.5 spacings.
     // The distance to edge k is the barycentric coordinate of the opposite corner times that
     // corner's height, linear over a stratum, so a stratum's corners bound it.
-    const bool has_lattice = expected >= lattice_from;
     const double twice_area = (b - a).cross(c - a).norm();
-    const double band = 2.5 * spacing;
-    const double h0 = twice_area / (c - b).norm(), h1 = twice_area / (c - a).norm(), h2 = twice_area / (b - a).norm();
+    const std::uint8_t edges = clusters.boundary_edges[t];
+    const double h0 = edges & 1 ? twice_area / (c - b).norm() : HUGE_VAL;
+    const double h1 = edges & 2 ? twice_area / (c - a).norm() : HUGE_VAL;
+    const double h2 = edges & 4 ? twice_area / (b - a).norm() : HUGE_VAL;
     const auto inside_band = [&](double u, double v) { return std::min({(1 - u - v) * h0, u * h1, v * h2}) > band; };
+    // Only a triangle on the boundary can tell its strata apart (one inside the cluster but
+    // within the band of its boundary keeps them all).
     const auto interior = [&](double u0, double v0, double u1, double v1, double u2, double v2) {
-      return has_lattice && inside_band(u0, v0) && inside_band(u1, v1) && inside_band(u2, v2);
+      return lattice_here && edges != 0 && inside_band(u0, v0) && inside_band(u1, v1) && inside_band(u2, v2);
     };
     // Stratified: the triangle cut into m² equal triangles by a barycentric grid, one point in
     // each with probability expected / m². Even cover for the count, where independent points

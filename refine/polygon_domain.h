@@ -57,10 +57,11 @@ class PolygonDomain final : public Domain {
   void intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const override;
   void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const override;
   std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const override;
-  /// First a jittered lattice on each triangle of at least spacing² / 2 (surface_lattice.h; the
-  /// count returned), then per triangle a number of uniform random points proportional to its
-  /// area, on lattice triangles only within ~2.5 spacings of their edges (deterministic: the
-  /// generator is seeded by the triangle's index). O(T + points).
+  /// First a jittered lattice on each cluster of nearly parallel triangles (triangle_clusters.h,
+  /// normals within kClusterAngle of the seed's) of at least spacing² / 2 (surface_lattice.h;
+  /// the count returned), then per triangle a number of uniform random points proportional to
+  /// its area, in a cluster with a lattice only within ~2.5 spacings of the cluster's boundary
+  /// (deterministic: the generator is seeded by the triangle's index). O(T log T + points).
   std::size_t surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
                           std::vector<std::uint32_t>& patches) const override;
 

@@ -43,32 +43,48 @@ std::array<double, 2> strip_range(const std::array<Point2, 3>& t, double lo, dou
 
 }  // namespace
 
-void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, double jitter,
-                      std::vector<Vec3>& out) {
-  if (!(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return;
+LatticeFrame lattice_frame(const Vec3& normal, const Vec3& point, double step) {
+  LatticeFrame f;
+  Vec3 n = normal.normalized();
+  if (!n.allFinite() || !(step > 0) || !std::isfinite(step)) return f;
   // The frame depends on the plane alone: the unit normal with its largest component positive,
   // u across it and the coordinate axis it leans on least, the origin the plane's point nearest
   // the coordinate origin.
-  Vec3 n = (b - a).cross(c - a).normalized();
-  if (!n.allFinite()) return;
   int largest = 0, smallest = 0;
   for (int k = 1; k < 3; ++k) {
     if (std::fabs(n[k]) > std::fabs(n[largest])) largest = k;
     if (std::fabs(n[k]) < std::fabs(n[smallest])) smallest = k;
   }
   if (n[largest] < 0) n = -n;
-  const Vec3 u = n.cross(Vec3::Unit(smallest)).normalized();
-  const Vec3 v = n.cross(u);
-  const double offset = n.dot(a);
-  const Vec3 origin = offset * n;
+  f.normal = n;
+  f.u = n.cross(Vec3::Unit(smallest)).normalized();
+  f.v = n.cross(f.u);
+  const double offset = n.dot(point);
+  f.origin = offset * n;
   // The jitter also depends on the plane's offset, quantised (coplanar triangles agree on it but
   // in the ~1e-12 chance that rounding puts them on two sides of a quantum: a seam, no error).
   // Without it two parallel planes, such as a cube's opposite faces, got translated copies of one
   // pattern: rectangles of four co-circular points across the model, co-spherical sets whose
   // power tests all fell to exact arithmetic (9% of meshing the cube).
   const double quantum = std::floor(offset / (0.5 * step));
-  const auto plane_key = std::fabs(quantum) < 0x1.0p62 ? static_cast<std::uint64_t>(static_cast<std::int64_t>(quantum)) : 0;
+  f.key = kernel::mix64(std::fabs(quantum) < 0x1.0p62 ? static_cast<std::uint64_t>(static_cast<std::int64_t>(quantum)) : 0);
+  f.valid = true;
+  return f;
+}
+
+void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, double jitter,
+                      std::vector<Vec3>& out) {
+  jittered_lattice(lattice_frame((b - a).cross(c - a), a, step), a, b, c, step, jitter, out);
+}
+
+void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
+                      double jitter, std::vector<Vec3>& out) {
+  if (!frame.valid || !(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return;
+  const Vec3 &u = frame.u, &v = frame.v, &origin = frame.origin;
   const auto in_plane = [&](const Vec3& p) { return Point2{u.dot(p - origin), v.dot(p - origin)}; };
+  // The triangle projected on the frame's plane (itself, or a nearly parallel triangle of the
+  // same cluster); the points found in the projection are mapped back by their barycentric
+  // coordinates, so they lie on the triangle.
   const std::array<Point2, 3> t{in_plane(a), in_plane(b), in_plane(c)};
   const double det = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
   if (!(std::fabs(det) > 0)) return;
@@ -93,7 +109,7 @@ void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, 
       // The jitter, uniform in the disk of radius `jitter`, from the lattice index and plane.
       const std::uint64_t h = kernel::mix64(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull ^
                                             static_cast<std::uint64_t>(j) * 0xc2b2ae3d27d4eb4full ^
-                                            kernel::mix64(plane_key));
+                                            frame.key);
       const double angle = static_cast<double>(h >> 40) * 0x1.0p-24 * 6.283185307179586;
       const double radius = jitter * std::sqrt(static_cast<double>(h & 0xffffff) * 0x1.0p-24);
       const double x = static_cast<double>(i) * step + shift + radius * std::cos(angle);

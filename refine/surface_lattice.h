@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <delpsc/kernel/point.h>
@@ -24,6 +25,33 @@ namespace delpsc::refine {
 /// Lattice step and jitter radius as multiples of the spacing (see the file comment).
 inline constexpr double kLatticeStep = 1.45;
 inline constexpr double kLatticeJitter = 0.12;
+/// Largest angle, in degrees, between a triangle's normal and its cluster's lattice plane
+/// (PolygonDomain::surface_candidates): the cover radius grows by 1 / cos of it, 0.957 to 1.06
+/// spacings at 25° (a few holes where a cluster is steepest, left to refinement), while curved
+/// models of small triangles get a lattice at all (insertions left to step 2 halved on fandisk,
+/// the elephant and the sphere against clusters of coplanar triangles only).
+inline constexpr double kClusterAngle = 25;
+
+/// A lattice's plane: unit normal (largest component positive), axes u and v, origin (the
+/// plane's point nearest the coordinate origin) and the key of its jitter (from the plane's
+/// offset). Not valid for a zero normal or a step that is not positive and finite.
+struct LatticeFrame {
+  Vec3 normal = Vec3::Zero(), u = Vec3::Zero(), v = Vec3::Zero(), origin = Vec3::Zero();
+  std::uint64_t key = 0;
+  bool valid = false;
+};
+
+/// The frame of the plane through `point` with normal `normal`, for lattices of step `step`.
+LatticeFrame lattice_frame(const Vec3& normal, const Vec3& point, double step);
+
+/// The points of `frame`'s jittered lattice whose projection on its plane falls in the
+/// projection of triangle (a, b, c), mapped to the triangle by their barycentric coordinates.
+/// For a triangle of the plane, its lattice points; for a nearby triangle at a small angle to it
+/// (a cluster of a curved surface), points on the triangle that are at least as far apart as in
+/// the plane (projection only shortens) and cover it as the plane's cover radius over the cosine
+/// of the angle. Nothing for a triangle seen edge-on, or an invalid frame, step or jitter.
+void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
+                      double jitter, std::vector<Vec3>& out);
 
 /// Appends to `out` the points of the jittered lattice of step `step` and jitter radius `jitter`
 /// on the plane of triangle (a, b, c) that lie in the closed triangle, as a + u (b - a) + v (c - a)
