@@ -3,6 +3,7 @@
 # builds bench/cgal/bench_mesh_vs_cgal.cpp with CGAL in a Release build directory, fetches the
 # libcgal-demo models, and prints the Markdown table.
 # Usage: scripts/bench-vs-cgal.sh [--models a,b] [--sizes 2,1,0.5] [--repetitions N] [--cap S]
+#        [--delpsc-criteria size|cgal] [--match-vertices yes|no]
 # Environment: BUILD_DIR (default build-cgalbench), JOBS (default 2).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -11,8 +11,13 @@
 // repetitions, CPU time measured inside the child, G1 checked (outside the timing) on the first one.
 // CGAL's output is put into our patch and curve ids first (relabel_to_domain.h).
 //
+// With --match-vertices yes, delpsc's h is fitted (two untimed runs after CGAL's first) so that
+// its output has CGAL's vertex count: the time ratio is then the speed-up at equal output vertex
+// count itself, with no assumption that either mesher scales linearly.
+//
 // Usage: cgal_bench_mesh_vs_cgal [--data DIR] [--models a,b,...] [--sizes 2,1,0.5]
 //                                [--repetitions N] [--cap SECONDS] [--delpsc-criteria size|cgal]
+//                                [--match-vertices yes|no]
 // Prints a Markdown table on stdout (one row per model and size), progress on stderr.
 #include <time.h>
 
@@ -150,6 +155,7 @@ struct Options {
   int repetitions = 3;
   double cap = 60;  // seconds per run
   bool cgal_criteria = false;  // delpsc also with facet_distance and facet_angle
+  bool match_vertices = false;  // delpsc at the size that gives CGAL's vertex count
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -174,6 +180,7 @@ bool parse(int argc, char** argv, Options& o) {
       } else if (a == "--repetitions") o.repetitions = std::max(1, std::stoi(v));
       else if (a == "--cap") o.cap = std::stod(v);
       else if (a == "--delpsc-criteria" && (v == "size" || v == "cgal")) o.cgal_criteria = v == "cgal";
+      else if (a == "--match-vertices" && (v == "yes" || v == "no")) o.match_vertices = v == "yes";
       else return false;
     } catch (const std::exception&) {
       return false;
@@ -226,11 +233,12 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, o)) {
     std::fprintf(stderr,
                  "usage: %s [--data DIR] [--models a,b,...] [--sizes 2,1,0.5] [--repetitions N] [--cap SECONDS] "
-                 "[--delpsc-criteria size|cgal]\n",
+                 "[--delpsc-criteria size|cgal] [--match-vertices yes|no]\n",
                  argv[0]);
     return 2;
   }
-  std::printf("delpsc criteria: facet_size = h%s\n\n", o.cgal_criteria ? ", facet_distance = h/10, facet_angle = 25" : "");
+  std::printf("delpsc criteria: facet_size = h%s%s\n\n", o.cgal_criteria ? ", facet_distance = h/10, facet_angle = 25" : "",
+              o.match_vertices ? "; delpsc's h chosen to give CGAL's vertex count (in brackets)" : "");
   std::printf("| model | h | delpsc vertices | delpsc time | of which refine | delpsc G1 | CGAL vertices | CGAL time "
               "| CGAL G1 | CGAL time / delpsc time | vertices/s, delpsc / CGAL |\n");
   std::printf("|---|---|---:|---:|---:|---|---:|---:|---|---:|---:|\n");
@@ -252,6 +260,7 @@ int main(int argc, char** argv) {
       const double h = percent / 100 * diagonal;
       Series ours, cgal;
       ours.skipped = ours_capped, cgal.skipped = cgal_capped;
+      double h_ours = h;  // --match-vertices: set after CGAL's first run
       for (int rep = 0; rep < o.repetitions; ++rep) {
         const bool check = rep == 0;
         // One run of each mesher in turn, so that a change of machine load hits both alike.
@@ -263,8 +272,22 @@ int main(int argc, char** argv) {
           if (run.end == RunEnd::kDone) s.runs.push_back(run.result);
           else if (rep == 0) s.first_end = run.end, capped = run.end == RunEnd::kTimedOut;
         };
-        one(ours, ours_capped, [&] { return measure_delpsc(path, h, o.cgal_criteria, check); });
-        one(cgal, cgal_capped, [&] { return measure_cgal(path, h, check, model.soup, domain); });
+        const auto run_ours = [&] { one(ours, ours_capped, [&] { return measure_delpsc(path, h_ours, o.cgal_criteria, check); }); };
+        if (o.match_vertices && rep == 0) {
+          // CGAL first, then two untimed runs of ours to fit h to its vertex count (vertices go
+          // as 1/h² away from the features; the second run corrects for them).
+          one(cgal, cgal_capped, [&] { return measure_cgal(path, h, check, model.soup, domain); });
+          for (int fit = 0; fit < 2 && !cgal.runs.empty() && !ours.skipped && !ours_capped; ++fit) {
+            const auto trial = bench::run_capped<Measured>([&] { return measure_delpsc(path, h_ours, o.cgal_criteria, false); }, o.cap);
+            if (trial.end != RunEnd::kDone || trial.result.vertices == 0) break;
+            const double ratio = double(trial.result.vertices) / double(cgal.runs.front().vertices);
+            h_ours *= std::clamp(std::sqrt(ratio), 0.5, 2.0);
+          }
+          run_ours();
+        } else {
+          run_ours();
+          one(cgal, cgal_capped, [&] { return measure_cgal(path, h, check, model.soup, domain); });
+        }
         std::fprintf(stderr, "%s %g%% repetition %d: delpsc %s, CGAL %s\n", name.c_str(), percent, rep + 1,
                      time_cell(ours, o.cap).c_str(), time_cell(cgal, o.cap).c_str());
       }
@@ -281,7 +304,10 @@ int main(int argc, char** argv) {
         std::sort(r.begin(), r.end());
         std::snprintf(refine_share, sizeof refine_share, "%.3g s", r[r.size() / 2]);
       }
-      std::printf("| %s | %g%% | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", name.c_str(), percent,
+      char size_cell[48];
+      if (o.match_vertices) std::snprintf(size_cell, sizeof size_cell, "%g%% (%.3g%%)", percent, 100 * h_ours / diagonal);
+      else std::snprintf(size_cell, sizeof size_cell, "%g%%", percent);
+      std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", name.c_str(), size_cell,
                   ours.runs.empty() ? "—" : count(ours.runs.front().vertices).c_str(), time_cell(ours, o.cap).c_str(),
                   refine_share, g1_cell(ours).c_str(),
                   cgal.runs.empty() ? "—" : count(cgal.runs.front().vertices).c_str(), time_cell(cgal, o.cap).c_str(),
