@@ -165,6 +165,8 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, std::size_t cover,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                          double spacing, std::span<const double> local_spacing) {
+  // Indices are 32-bit; each call below checks only its own part.
+  if (candidates.size() > 0xffffffffu) return {};
   cover = std::min(cover, candidates.size());
   const bool local = !local_spacing.empty();
   if (local && local_spacing.size() != candidates.size()) return {};

@@ -142,39 +142,47 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
   if (!(spacing > 0) || !std::isfinite(spacing)) return 0;
   const double per_area = 4.0 / (spacing * spacing);
   const double step = kLatticeStep * spacing, jitter = kLatticeJitter * spacing;
-  // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
-  // lattice point each: random candidates serve them as well).
-  const double band = 2.5 * spacing;
-  const TriangleClusters clusters = cluster_triangles(complex_, kClusterAngle, band);
-  std::vector<double> cluster_area(clusters.seed.size(), 0);
   std::vector<double> expected_in(complex_.triangles.size());
   double total = 0;
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
     const auto& tri = complex_.triangles[t];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    cluster_area[clusters.cluster_of[t]] += area;
-    total += expected_in[t] = area * per_area;
+    total += expected_in[t] = 0.5 * (b - a).cross(c - a).norm() * per_area;
   }
-  // The lattice adds ~1/7 of the random candidates' count where it is laid (below).
-  if (!(total * 8 / 7 <= static_cast<double>(budget))) return 0;  // also when not finite
-  const auto has_lattice = [&](std::uint32_t t) { return cluster_area[clusters.cluster_of[t]] * per_area >= 2; };
+  if (!(total <= static_cast<double>(budget))) return 0;  // also when not finite
+  const std::size_t start = points.size();
+
+  // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
+  // lattice point each: random candidates serve them as well), first: the mesher chooses from it
+  // first. Its work (rows and sites tried) is capped by what the budget leaves after the random
+  // candidates; a lattice that would need more (needles many steps long) is dropped, and the
+  // random candidates go everywhere, as without it.
+  const double band = 2.5 * spacing;
+  const TriangleClusters clusters = cluster_triangles(complex_, kClusterAngle, band);
+  std::vector<double> cluster_area(clusters.seed.size(), 0);
+  for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) cluster_area[clusters.cluster_of[t]] += expected_in[t];
+  bool lattice_laid = true;
+  const auto has_lattice = [&](std::uint32_t t) { return lattice_laid && cluster_area[clusters.cluster_of[t]] >= 2; };
   std::vector<LatticeFrame> frames(clusters.seed.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const auto& tri = complex_.triangles[clusters.seed[k]];
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
     frames[k] = lattice_frame((b - a).cross(c - a), a, step);
   }
-
-  // The lattice first: the mesher chooses from it first.
-  for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
+  const auto random_expected = static_cast<std::size_t>(std::ceil(total));  // total <= budget < 2^64
+  std::size_t work = budget > random_expected ? budget - random_expected : 0;
+  for (std::uint32_t t = 0; t < complex_.triangles.size() && lattice_laid; ++t) {
     if (!has_lattice(t)) continue;
     const auto& tri = complex_.triangles[t];
-    jittered_lattice(frames[clusters.cluster_of[t]], complex_.vertices[tri[0]], complex_.vertices[tri[1]],
-                     complex_.vertices[tri[2]], step, jitter, points);
+    lattice_laid = jittered_lattice(frames[clusters.cluster_of[t]], complex_.vertices[tri[0]], complex_.vertices[tri[1]],
+                                    complex_.vertices[tri[2]], step, jitter, points, &work);
     patches.resize(points.size(), complex_.triangle_patch[t]);
   }
-  const std::size_t lattice = points.size();
+  if (!lattice_laid) {
+    points.resize(start);
+    patches.resize(start);
+  }
+  const std::size_t lattice = points.size() - start;
 
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
     // splitmix64 seeded by the mixed triangle index: the same points on every call and machine,
@@ -235,6 +243,12 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
         if (i + j + 1 < m && uniform() < keep && !interior(u + step_uv, v, u, v + step_uv, u + step_uv, v + step_uv))
           uniform_in(u + step_uv, v, u, v + step_uv, u + step_uv, v + step_uv);
       }
+  }
+  // The stratified counts may pass their expectation: the promise is none at all then.
+  if (points.size() - start > budget) {
+    points.resize(start);
+    patches.resize(start);
+    return 0;
   }
   return lattice;
 }

@@ -77,9 +77,9 @@ void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, 
   jittered_lattice(lattice_frame((b - a).cross(c - a), a, step), a, b, c, step, jitter, out);
 }
 
-void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
-                      double jitter, std::vector<Vec3>& out) {
-  if (!frame.valid || !(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return;
+bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
+                      double jitter, std::vector<Vec3>& out, std::size_t* work) {
+  if (!frame.valid || !(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return true;
   const Vec3 &u = frame.u, &v = frame.v, &origin = frame.origin;
   const auto in_plane = [&](const Vec3& p) { return Point2{u.dot(p - origin), v.dot(p - origin)}; };
   // The triangle projected on the frame's plane (itself, or a nearly parallel triangle of the
@@ -87,17 +87,26 @@ void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
   // coordinates, so they lie on the triangle.
   const std::array<Point2, 3> t{in_plane(a), in_plane(b), in_plane(c)};
   const double det = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
-  if (!(std::fabs(det) > 0)) return;
+  if (!(std::fabs(det) > 0)) return true;
   // Lattice indices must stay exact integers in doubles (and fit the index type): a plane this
   // far from the origin for its step gets no lattice (the random candidates still come).
   for (const Point2& p : t)
-    if (!(std::max(std::fabs(p.x), std::fabs(p.y)) < 0x1.0p50 * step)) return;
+    if (!(std::max(std::fabs(p.x), std::fabs(p.y)) < 0x1.0p50 * step)) return true;
   const double row = step * std::sqrt(3.0) / 2;
   const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter;
   const double yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
   const auto first_row = static_cast<std::int64_t>(std::floor(ylo / row));
   const auto last_row = static_cast<std::int64_t>(std::ceil(yhi / row));
+  // The work is rows plus lattice sites tried, ~perimeter / step + area / step²: for a long
+  // needle far more than the points it yields, hence the caller's cap.
+  const auto charge = [&](std::int64_t units) {
+    if (work == nullptr) return true;
+    if (static_cast<std::uint64_t>(units) > *work) return false;
+    *work -= static_cast<std::size_t>(units);
+    return true;
+  };
   for (std::int64_t j = first_row; j <= last_row; ++j) {
+    if (!charge(1)) return false;
     const double y0 = static_cast<double>(j) * row;
     // Points of this row move by at most `jitter`: the triangle's part within it of the row.
     const auto [x0, x1] = strip_range(t, y0 - jitter, y0 + jitter);
@@ -105,6 +114,7 @@ void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
     const double shift = 0.5 * step * static_cast<double>(j & 1);  // odd rows half a step over
     const auto first = static_cast<std::int64_t>(std::floor((x0 - jitter - shift) / step));
     const auto last = static_cast<std::int64_t>(std::ceil((x1 + jitter - shift) / step));
+    if (!charge(last - first + 1)) return false;
     for (std::int64_t i = first; i <= last; ++i) {
       // The jitter, uniform in the disk of radius `jitter`, from the lattice index and plane.
       const std::uint64_t h = kernel::mix64(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull ^
@@ -121,6 +131,7 @@ void jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
       if (s >= 0 && r >= 0 && s + r <= 1) out.push_back(a + s * (b - a) + r * (c - a));
     }
   }
+  return true;
 }
 
 }  // namespace delpsc::refine

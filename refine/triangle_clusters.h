@@ -18,7 +18,7 @@ struct TriangleClusters {
   std::vector<std::uint32_t> seed;           ///< per cluster: the triangle it was grown from
   std::vector<std::uint8_t> boundary_edges;  ///< per triangle, bit k: edge k (opposite vertex k)
   /// Per triangle: 0 with a boundary edge, else the shortest path through the centroids of its
-  /// cluster's triangles to one that has; HUGE_VAL beyond `horizon`.
+  /// cluster's triangles to one that has; exact up to `horizon`, larger (up to HUGE_VAL) beyond.
   std::vector<double> distance;
 };
 

@@ -6,6 +6,7 @@
 #include <random>
 
 #include <delpsc/io/shapes.h>
+#include <delpsc/protect/complex.h>
 #include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/surface_lattice.h>
@@ -155,11 +156,28 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice fir
   CHECK(domain.surface_candidates(0, 1u << 30, none, again_patches) == 0);
   CHECK(domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches) == 0);
   CHECK(none.empty());
-  // More than the budget: none at all (~9,600 random and ~1,400 lattice points budgeted here).
-  CHECK(domain.surface_candidates(spacing, 10000, none, again_patches) == 0);
+  // More than the budget: none at all (~9,600 random candidates are expected here). A budget
+  // that leaves too little for the lattice's work: random candidates alone, everywhere.
+  CHECK(domain.surface_candidates(spacing, 9000, none, again_patches) == 0);
   CHECK(none.empty());
-  domain.surface_candidates(spacing, 11500, none, again_patches);
-  CHECK(!none.empty());
+  CHECK(domain.surface_candidates(spacing, 10000, none, again_patches) == 0);
+  CHECK(none.size() > 9000);
+  none.clear();
+  CHECK(domain.surface_candidates(spacing, 20000, none, again_patches) > 0);
+}
+
+TEST_CASE("PolygonDomain::surface_candidates bounds the lattice's work by the budget") {
+  // A needle 10^8 spacings long and 10^-3 wide: ~7 10^7 lattice sites to try for a handful of
+  // points. Within a budget of 10^6 (2 10^5 random candidates) the lattice is dropped at once,
+  // the random candidates remain.
+  io::TriangleSoup soup;
+  soup.vertices = {Vec3(0, 0, 0), Vec3(1e8, 0, 0), Vec3(0, 1e-3, 0)};
+  soup.triangles = {{0, 1, 2}};
+  const refine::PolygonDomain domain(protect::build_complex(soup));
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> patches;
+  CHECK(domain.surface_candidates(1.0, 1000000, points, patches) == 0);
+  CHECK(!points.empty());
 }
 
 namespace {
@@ -236,6 +254,27 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     CHECK(uncovered(probes, all, cover_radius) == 0);
     // The bound is tight enough to mean something: at 0.9 of it, some probes are left out.
     CHECK(uncovered(probes, all, 0.9 * cover_radius) > 0);
+  }
+  // A triangle's lattice is the plane's lattice clipped to it: a square's two halves together
+  // have exactly the points of a big triangle of the same plane that fall in the square.
+  {
+    std::vector<Vec3> big, halves;
+    refine::jittered_lattice(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), step, jitter, big);
+    refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), step, jitter, halves);
+    refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), step, jitter, halves);
+    const auto inside = [](const Vec3& p) { return p.x() > 1e-9 && p.y() > 1e-9 && p.x() < 1 - 1e-9 && p.y() < 1 - 1e-9; };
+    const auto has = [](const std::vector<Vec3>& set, const Vec3& p) {
+      return std::any_of(set.begin(), set.end(), [&](const Vec3& q) { return (q - p).norm() < 1e-12; });
+    };
+    std::size_t in_square = 0;
+    for (const Vec3& p : big)
+      if (inside(p)) {
+        ++in_square;
+        CHECK(has(halves, p));
+      }
+    for (const Vec3& p : halves)
+      if (inside(p)) CHECK(has(big, p));
+    CHECK(in_square > 50);
   }
   // A cluster's triangle at an angle to the lattice's plane: points on it, still spaced (the
   // projection only shortens), covering it to the cover radius over the cosine of the angle.
