@@ -282,7 +282,7 @@ Runner register_mesh(CLI::App& app) {
                "curves' edges, every vertex on the model; exit 1 if it fails");
   app.add_flag("--no-initial-sample", o->no_initial_sample,
                "Start refinement from the protecting balls alone, as the paper does, instead of also from a "
-               "sample of the surface whose points are farther than the size apart (about twice as slow, 3-5% fewer "
+               "sample of the surface whose points are farther than the size apart (2-3 times as slow, ~20% more "
                "vertices)");
   app.add_option("--balls", o->balls_path, "Write the final protecting balls as text (the format of `delpsc protect`)");
   app.add_option("--preview", o->preview,
