@@ -93,6 +93,11 @@ bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
   for (const Point2& p : t)
     if (!(std::max(std::fabs(p.x), std::fabs(p.y)) < 0x1.0p50 * step)) return true;
   const double row = step * std::sqrt(3.0) / 2;
+  // How far each barycentric coordinate can move under the jitter (gradient norm times radius),
+  // with a relative margin for the rounding of both evaluations.
+  const double reach_s = 1.0001 * jitter * std::sqrt((t[2].y - t[0].y) * (t[2].y - t[0].y) + (t[2].x - t[0].x) * (t[2].x - t[0].x)) / std::fabs(det) + 1e-12;
+  const double reach_r = 1.0001 * jitter * std::sqrt((t[1].y - t[0].y) * (t[1].y - t[0].y) + (t[1].x - t[0].x) * (t[1].x - t[0].x)) / std::fabs(det) + 1e-12;
+  const double reach_q = reach_s + reach_r;
   const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter;
   const double yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
   const auto first_row = static_cast<std::int64_t>(std::floor(ylo / row));
@@ -116,13 +121,21 @@ bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
     const auto last = static_cast<std::int64_t>(std::ceil((x1 + jitter - shift) / step));
     if (!charge(last - first + 1)) return false;
     for (std::int64_t i = first; i <= last; ++i) {
+      // A site whose whole jitter disk is outside the triangle is skipped before its jitter is
+      // drawn (sin and cos are most of a site's cost, and on triangles smaller than the step most
+      // sites tried fall outside): a barycentric coordinate moves by at most its gradient's norm
+      // times the jitter.
+      const double cx = static_cast<double>(i) * step + shift;
+      const double s0 = ((cx - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (y0 - t[0].y)) / det;
+      const double r0 = ((t[1].x - t[0].x) * (y0 - t[0].y) - (cx - t[0].x) * (t[1].y - t[0].y)) / det;
+      if (s0 < -reach_s || r0 < -reach_r || 1 - s0 - r0 < -reach_q) continue;
       // The jitter, uniform in the disk of radius `jitter`, from the lattice index and plane.
       const std::uint64_t h = kernel::mix64(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull ^
                                             static_cast<std::uint64_t>(j) * 0xc2b2ae3d27d4eb4full ^
                                             frame.key);
       const double angle = static_cast<double>(h >> 40) * 0x1.0p-24 * 6.283185307179586;
       const double radius = jitter * std::sqrt(static_cast<double>(h & 0xffffff) * 0x1.0p-24);
-      const double x = static_cast<double>(i) * step + shift + radius * std::cos(angle);
+      const double x = cx + radius * std::cos(angle);
       const double y = y0 + radius * std::sin(angle);
       // Barycentric coordinates in the plane; the point is made from the triangle's own corners,
       // so it lies on the triangle up to rounding.

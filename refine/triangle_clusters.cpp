@@ -1,5 +1,6 @@
 #include "triangle_clusters.h"
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <queue>
@@ -18,14 +19,17 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
     normal[t] = (b - a).cross(c - a).normalized();
     centroid[t] = (a + b + c) / 3;
   }
-  // The triangle across edge k of t, if the edge is no feature (exactly two triangles).
-  const auto across = [&](std::uint32_t t, int k) {
-    const std::uint32_t e = complex.triangle_edges[t][k];
-    if (complex.edge_feature[e] != 0) return kNone;
-    for (std::uint32_t q = complex.edge_triangle_offsets[e]; q < complex.edge_triangle_offsets[e + 1]; ++q)
-      if (complex.edge_triangles[q] != t) return complex.edge_triangles[q];
-    return kNone;
-  };
+  // The triangle across edge k of t, if the edge is no feature (exactly two triangles), looked
+  // up once: the three passes below read it again and again.
+  std::vector<std::array<std::uint32_t, 3>> neighbour(n, {kNone, kNone, kNone});
+  for (std::uint32_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t e = complex.triangle_edges[t][k];
+      if (complex.edge_feature[e] != 0) continue;
+      for (std::uint32_t q = complex.edge_triangle_offsets[e]; q < complex.edge_triangle_offsets[e + 1]; ++q)
+        if (complex.edge_triangles[q] != t) neighbour[t][k] = complex.edge_triangles[q];
+    }
+  const auto across = [&](std::uint32_t t, int k) { return neighbour[t][k]; };
   TriangleClusters out;
   out.cluster_of.assign(n, kNone);
   out.boundary_edges.assign(n, 0);
