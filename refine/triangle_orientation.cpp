@@ -1,6 +1,5 @@
 #include "triangle_orientation.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace delpsc::refine {
@@ -8,79 +7,80 @@ namespace delpsc::refine {
 std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles) {
   const std::size_t n = triangles.size();
   constexpr std::uint32_t kNone = 0xffffffffu;
-  // Each vertex's triangles (flat, by vertex), then each triangle's neighbours across its edges
-  // used by exactly two triangles: a scan of the first end's few triangles per edge, instead of
-  // sorting all 3T edge uses (and a heap-allocated list per triangle).
-  std::vector<std::uint32_t> first(vertices.size() + 1, 0), around(3 * n);
+  // Each vertex's triangles (flat, by vertex), each with the two other vertices in the
+  // triangle's cyclic order after this one, so that finding the triangles across an edge reads
+  // one short contiguous list instead of every candidate triangle (4.8% of meshing the cube when
+  // it did).
+  struct Around {
+    std::uint32_t triangle, next, after;  // (v, next, after) is the triangle's cyclic order
+  };
+  std::vector<std::uint32_t> first(vertices.size() + 1, 0);
   for (const auto& t : triangles)
     for (const std::uint32_t v : t) ++first[v + 1];
   for (std::size_t v = 0; v < vertices.size(); ++v) first[v + 1] += first[v];
+  std::vector<Around> around(3 * n);
   {
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (std::uint32_t t = 0; t < n; ++t)
-      for (const std::uint32_t v : triangles[t]) around[fill[v]++] = t;
+      for (int k = 0; k < 3; ++k)
+        around[fill[triangles[t][k]]++] = {t, triangles[t][(k + 1) % 3], triangles[t][(k + 2) % 3]};
   }
+  // Across edge k of t (from vertex k to k + 1): the other triangle if exactly two use the edge,
+  // and whether the two traverse it in opposite directions (consistently oriented as given).
   // `open` marks triangles with an edge that is not used by exactly two triangles.
   std::vector<std::array<std::uint32_t, 3>> next(n, {kNone, kNone, kNone});
+  std::vector<std::uint8_t> opposite(n, 0);  // bit k: across edge k, opposite directions
   std::vector<char> open(n, 0);
   for (std::uint32_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
       std::uint32_t other = kNone, users = 1;
+      bool reversed = false;
       for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
-        const std::uint32_t u = around[i];
-        if (u == t || std::find(triangles[u].begin(), triangles[u].end(), b) == triangles[u].end()) continue;
-        other = u;
+        const Around& x = around[i];
+        if (x.triangle == t || (x.next != b && x.after != b)) continue;
+        other = x.triangle;
+        reversed = x.after == b;  // the other triangle goes b -> a
         ++users;
       }
-      if (users == 2)
+      if (users == 2) {
         next[t][k] = other;
-      else
+        if (reversed) opposite[t] |= static_cast<std::uint8_t>(1u << k);
+      } else {
         open[t] = 1;
+      }
     }
-  auto has_directed = [&](std::uint32_t t, std::uint32_t a, std::uint32_t b) {
-    const auto& v = triangles[t];
-    for (int k = 0; k < 3; ++k)
-      if (v[k] == a && v[(k + 1) % 3] == b) return true;
-    return false;
-  };
-  std::vector<char> seen(n, 0);
+  // Breadth-first search per component, deciding which triangles to flip: u keeps t's decision
+  // when they already agree across their edge, and takes the other one when they do not.
+  std::vector<std::int8_t> flip(n, -1);  // -1: not reached yet
   std::size_t bad = 0;
   std::vector<std::uint32_t> component, queue;
   for (std::uint32_t start = 0; start < n; ++start) {
-    if (seen[start]) continue;
+    if (flip[start] >= 0) continue;
     component.clear();
     queue.assign(1, start);
-    seen[start] = 1;
+    flip[start] = 0;
     bool closed = true, orientable = true;
     while (!queue.empty()) {
       const std::uint32_t t = queue.back();
       queue.pop_back();
       component.push_back(t);
       closed &= !open[t];
-      for (const std::uint32_t u : next[t]) {
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t u = next[t][k];
         if (u == kNone) continue;
-        // The shared edge (a, b) as t traverses it; u must traverse it as (b, a).
-        std::uint32_t a = 0, b = 0;
-        for (int k = 0; k < 3; ++k) {
-          const std::uint32_t x = triangles[t][k], y = triangles[t][(k + 1) % 3];
-          if (std::find(triangles[u].begin(), triangles[u].end(), x) != triangles[u].end() &&
-              std::find(triangles[u].begin(), triangles[u].end(), y) != triangles[u].end()) {
-            a = x;
-            b = y;
-          }
-        }
-        const bool agrees = has_directed(u, b, a);
-        if (!seen[u]) {
-          if (!agrees) std::swap(triangles[u][1], triangles[u][2]);
-          seen[u] = 1;
+        const auto wanted = static_cast<std::int8_t>((opposite[t] >> k & 1u) ? flip[t] : 1 - flip[t]);
+        if (flip[u] < 0) {
+          flip[u] = wanted;
           queue.push_back(u);
-        } else if (!agrees) {
+        } else if (flip[u] != wanted) {
           orientable = false;
         }
       }
     }
     if (!orientable) ++bad;
+    for (const std::uint32_t t : component)
+      if (flip[t] == 1) std::swap(triangles[t][1], triangles[t][2]);
     if (closed && orientable) {
       double volume = 0;
       for (const std::uint32_t t : component) {

@@ -1,0 +1,100 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <utility>
+
+#include <delpsc/io/shapes.h>
+#include <delpsc/refine/triangle_orientation.h>
+
+using namespace delpsc;
+
+namespace {
+
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+// How many times each directed edge is used: a consistent orientation uses each edge shared by
+// two triangles once in each direction.
+std::size_t edges_used_twice_the_same_way(const Triangles& triangles) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  std::size_t bad = 0;
+  for (const auto& [edge, uses] : directed) bad += uses > 1;
+  return bad;
+}
+
+double signed_volume(const std::vector<Vec3>& v, const Triangles& triangles) {
+  double volume = 0;
+  for (const auto& t : triangles) volume += v[t[0]].dot(v[t[1]].cross(v[t[2]]));
+  return volume / 6;
+}
+
+void flip_some(Triangles& triangles, unsigned seed) {
+  std::mt19937 rng(seed);
+  for (auto& t : triangles)
+    if (rng() & 1u) std::swap(t[1], t[2]);
+}
+
+}  // namespace
+
+TEST_CASE("orient_triangles: a closed surface comes out consistent and outward") {
+  for (const auto& soup : {io::make_cube(3, 2.0), io::make_sphere(6), io::make_torus(1, 0.3, 16, 8)}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      Triangles triangles = soup.triangles;
+      flip_some(triangles, seed);
+      REQUIRE(edges_used_twice_the_same_way(triangles) > 0);
+      CHECK(refine::orient_triangles(soup.vertices, triangles) == 0);
+      CHECK(edges_used_twice_the_same_way(triangles) == 0);
+      CHECK(signed_volume(soup.vertices, triangles) > 0);
+    }
+    // All turned inside out: turned back.
+    Triangles inverted = soup.triangles;
+    for (auto& t : inverted) std::swap(t[1], t[2]);
+    refine::orient_triangles(soup.vertices, inverted);
+    CHECK(signed_volume(soup.vertices, inverted) > 0);
+  }
+}
+
+TEST_CASE("orient_triangles: open and non-manifold sets, and a Moebius strip") {
+  // An open sheet: consistent, whichever way.
+  const io::TriangleSoup sheet = io::make_square_sheet(5);
+  Triangles triangles = sheet.triangles;
+  flip_some(triangles, 7);
+  CHECK(refine::orient_triangles(sheet.vertices, triangles) == 0);
+  CHECK(edges_used_twice_the_same_way(triangles) == 0);
+  // Three sheets on one edge: that edge joins nothing, each sheet is consistent by itself.
+  const io::TriangleSoup book = io::make_book(3, 4);
+  triangles = book.triangles;
+  flip_some(triangles, 9);
+  CHECK(refine::orient_triangles(book.vertices, triangles) == 0);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  for (const auto& [edge, n] : uses)
+    if (n == 2) CHECK(directed[edge] == 1);  // both directions once
+  // A Moebius strip: 12 quads around a loop with a half twist; one non-orientable component.
+  std::vector<Vec3> v;
+  const int m = 12;
+  for (int i = 0; i < m; ++i) {
+    const double a = 2 * M_PI * i / m, twist = a / 2;
+    const Vec3 centre(std::cos(a), std::sin(a), 0), radial(std::cos(a), std::sin(a), 0), up(0, 0, 1);
+    const Vec3 w = std::cos(twist) * radial + std::sin(twist) * up;
+    v.push_back(centre - 0.2 * w);
+    v.push_back(centre + 0.2 * w);
+  }
+  Triangles strip;
+  for (int i = 0; i < m; ++i) {
+    const std::uint32_t a0 = 2 * i, a1 = 2 * i + 1;
+    // The last quad joins the first column the other way round: the half twist.
+    const bool last = i == m - 1;
+    const std::uint32_t b0 = last ? 1 : 2 * (i + 1), b1 = last ? 0 : 2 * (i + 1) + 1;
+    strip.push_back({a0, b0, b1});
+    strip.push_back({a0, b1, a1});
+  }
+  CHECK(refine::orient_triangles(v, strip) == 1);
+}
