@@ -227,7 +227,11 @@ void RestrictedFacets::examine(Facet f) {
     for (int k = 0; k < 3; ++k) {
       const PointId u = v[k];
       if (by_vertex_.size() <= u) by_vertex_.resize(std::max<std::size_t>(u + 1, 2 * by_vertex_.size()));
-      by_vertex_[u].push_back({s, patch, {v[k == 0 ? 1 : 0], v[k == 2 ? 1 : 2]}});
+      // A surface vertex has ~6 restricted facets: room for 8 at once instead of growing 1, 2,
+      // 4, 8 (the reallocations were 2.6% of meshing joint).
+      auto& list = by_vertex_[u];
+      if (list.capacity() == 0) list.reserve(8);
+      list.push_back({s, patch, {v[k == 0 ? 1 : 0], v[k == 2 ? 1 : 2]}});
     }
     made_.push_back({v[0], v[1], v[2], patch});
     if (heap_active_) heap_.emplace(r.power, s, r.stamp);
