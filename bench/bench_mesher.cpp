@@ -92,11 +92,27 @@ void initial_sample(benchmark::State& state, const Model& m) {
   state.counters["chosen"] = static_cast<double>(chosen);
 }
 
+// The candidates alone (clusters, lattice, random points near the clusters' boundaries) at a
+// coarser size: their cost per triangle is fixed, so it shows where the mesh is small.
+void candidates(benchmark::State& state, const Model& m, double scale) {
+  std::size_t count = 0, cover = 0;
+  for (auto _ : state) {
+    std::vector<Vec3> points;
+    std::vector<std::uint32_t> patches;
+    cover = m.domain->surface_candidates(scale * m.lambda, 0xffffffffu, points, patches);
+    count = points.size();
+    benchmark::DoNotOptimize(points);
+  }
+  state.counters["candidates"] = static_cast<double>(count);
+  state.counters["lattice"] = static_cast<double>(cover);
+}
+
 const int registered = [] {
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/paper").c_str(), mesh, m, false)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("initial_sample/" + m.name).c_str(), initial_sample, m)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("candidates/" + m.name + "/2%").c_str(), candidates, m, 4.0)->Unit(benchmark::kMillisecond);
   }
   return 0;
 }();

@@ -212,11 +212,11 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
       if (uniform() < expected) uniform_in(0, 0, 1, 0, 0, 1);
       continue;
     }
-    // Where the triangle has a lattice, random candidates only near its edges: the lattice
-    // covers the rest, so every candidate there would be refused. A candidate can be chosen only
-    // where the lattice left a gap: at a seam with a triangle of another plane, or where a ball
-    // refused lattice points (within sqrt(spacing² + r²) <= 1.42 spacing of its centre, on an
-    // edge since curves run along edges), plus the cover radius 0.96 spacing: 2.5 spacings.
+    // In a cluster with a lattice, random candidates only near the cluster's boundary edges: the
+    // lattice covers the rest, so every candidate there would be refused. A candidate can be
+    // chosen only where the lattice left a gap: at a seam with another cluster, or where a ball
+    // refused lattice points (within sqrt(spacing² + r²) <= 1.42 spacing of its centre, on a
+    // boundary edge since curves are features), plus the cover radius ~1 spacing: 2.5 spacings.
     // The distance to edge k is the barycentric coordinate of the opposite corner times that
     // corner's height, linear over a stratum, so a stratum's corners bound it.
     const double twice_area = (b - a).cross(c - a).norm();

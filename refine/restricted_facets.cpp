@@ -89,18 +89,23 @@ void RestrictedFacets::forget_record(std::uint32_t s) {
 // cap of 30,000 vertices where this ends after 1,900 insertions), so flat cells keep it.
 delaunay::VoronoiEdge RestrictedFacets::dual_projected(delaunay::Facet f, const std::array<PointId, 3>& t) const {
   delaunay::VoronoiEdge e = dt_->dual(f);
-  const WeightedPoint &a = dt_->point(t[0]), &b = dt_->point(t[1]), &c = dt_->point(t[2]);
-  const auto centre = kernel::orthocentre(a, b, c);
-  if (!centre) return e;
-  const Vec3 o = centre->point();
-  const Vec3 n = (b.point() - a.point()).cross(c.point() - a.point()).normalized();
-  if (!n.allFinite()) return e;
+  const auto line = facet_line(t);
+  if (!line) return e;
+  const auto& [o, n, power] = *line;
   e.source = o + (e.source - o).dot(n) * n;
   if (e.is_ray)
     e.direction = e.direction.dot(n) >= 0 ? n : Vec3(-n);
   else
     e.target = o + (e.target - o).dot(n) * n;
   return e;
+}
+
+std::optional<RestrictedFacets::FacetLine> RestrictedFacets::facet_line(const std::array<PointId, 3>& t) const {
+  const WeightedPoint &a = dt_->point(t[0]), &b = dt_->point(t[1]), &c = dt_->point(t[2]);
+  const auto centre = kernel::orthocentre(a, b, c);
+  const Vec3 n = (b.point() - a.point()).cross(c.point() - a.point()).normalized();
+  if (!centre || !n.allFinite()) return std::nullopt;
+  return FacetLine{centre->point(), n, (centre->point() - a.point()).squaredNorm() - a.w};
 }
 
 // V_t lies on the line of points power-equidistant from t's three vertices: through t's own
@@ -115,13 +120,9 @@ delaunay::VoronoiEdge RestrictedFacets::dual_projected(delaunay::Facet f, const 
 // rounding; examine() uses it only then.
 delaunay::VoronoiEdge RestrictedFacets::dual_on_facet_line(delaunay::Facet f, const std::array<PointId, 3>& t) const {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  const WeightedPoint &a = dt_->point(t[0]), &b = dt_->point(t[1]), &c = dt_->point(t[2]);
-  const auto centre = kernel::orthocentre(a, b, c);
-  const Vec3 normal = (b.point() - a.point()).cross(c.point() - a.point());
-  const Vec3 n = normal.normalized();
-  if (!centre || !n.allFinite()) return {Vec3::Constant(kNaN), Vec3::Constant(kNaN), Vec3::Zero(), false};
-  const Vec3 o = centre->point();
-  const double p = (o - a.point()).squaredNorm() - a.w;
+  const auto line = facet_line(t);
+  if (!line) return {Vec3::Constant(kNaN), Vec3::Constant(kNaN), Vec3::Zero(), false};
+  const auto& [o, n, p] = *line;
   const auto end = [&](delaunay::Facet side) {
     const WeightedPoint& d = dt_->point(dt_->vertex(side.cell, side.index));
     const Vec3 od = o - d.point();

@@ -142,6 +142,13 @@ class RestrictedFacets {
   /// Appends to `touched` the vertices of the (triangle, patch) pairs in gone_ or made_ but not
   /// both, and empties them.
   void touch_changed(std::vector<PointId>& touched);
+  /// The line of points power-equidistant from t's vertices: t's orthocentre, t's unit normal,
+  /// and the power distance from the orthocentre to t's vertices. nullopt for a degenerate t.
+  struct FacetLine {
+    Vec3 orthocentre, normal;
+    double power;
+  };
+  std::optional<FacetLine> facet_line(const std::array<PointId, 3>& t) const;
   /// The dual edge of finite facet f, whose vertices are t (sorted), computed on t's line from
   /// t's orthocentre (precondition: both cells finite). An end is not finite when a cell is flat.
   delaunay::VoronoiEdge dual_on_facet_line(delaunay::Facet f, const std::array<PointId, 3>& t) const;

@@ -29,7 +29,6 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
       for (std::uint32_t q = complex.edge_triangle_offsets[e]; q < complex.edge_triangle_offsets[e + 1]; ++q)
         if (complex.edge_triangles[q] != t) neighbour[t][k] = complex.edge_triangles[q];
     }
-  const auto across = [&](std::uint32_t t, int k) { return neighbour[t][k]; };
   TriangleClusters out;
   out.cluster_of.assign(n, kNone);
   out.boundary_edges.assign(n, 0);
@@ -44,7 +43,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
       const std::uint32_t t = queue.back();
       queue.pop_back();
       for (int k = 0; k < 3; ++k) {
-        const std::uint32_t u = across(t, k);
+        const std::uint32_t u = neighbour[t][k];
         if (u == kNone || out.cluster_of[u] != kNone || !(normal[u].dot(normal[s]) >= min_cos)) continue;
         out.cluster_of[u] = id;
         queue.push_back(u);
@@ -57,7 +56,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   for (std::uint32_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = across(t, k);
+      const std::uint32_t u = neighbour[t][k];
       if (u == kNone || out.cluster_of[u] != out.cluster_of[t]) {
         out.boundary_edges[t] |= static_cast<std::uint8_t>(1u << k);
         if (out.distance[t] != 0) heap.emplace(out.distance[t] = 0, t);
@@ -68,7 +67,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
     heap.pop();
     if (d > out.distance[t] || d > horizon) continue;
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = across(t, k);
+      const std::uint32_t u = neighbour[t][k];
       if (u == kNone || out.cluster_of[u] != out.cluster_of[t]) continue;
       const double du = d + (centroid[u] - centroid[t]).norm();
       if (du < out.distance[u]) heap.emplace(out.distance[u] = du, u);

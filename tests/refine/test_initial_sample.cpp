@@ -10,6 +10,7 @@
 #include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/surface_lattice.h>
+#include <delpsc/refine/triangle_clusters.h>
 
 using namespace delpsc;
 
@@ -320,6 +321,40 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, step, none);
   refine::jittered_lattice(Vec3(1e20, 0, 0), Vec3(2e20, 0, 0), Vec3(1e20, 1e20, 0), step, jitter, none);
   CHECK(none.empty());
+}
+
+TEST_CASE("cluster_triangles: nearly parallel triangles grouped, boundaries and distances") {
+  // A cube of 4 x 4 quads per face: 6 clusters of 32 triangles, one per face; the face borders
+  // (features) bound them and nothing else does.
+  const protect::Complex cube = protect::build_complex(io::make_cube(4));
+  const refine::TriangleClusters c = refine::cluster_triangles(cube, 25, 10);
+  CHECK(c.seed.size() == 6);
+  std::vector<int> size(c.seed.size(), 0);
+  for (const std::uint32_t k : c.cluster_of) ++size[k];
+  for (const int n : size) CHECK(n == 32);
+  for (std::size_t t = 0; t < cube.triangles.size(); ++t) {
+    CHECK(c.cluster_of[c.seed[c.cluster_of[t]]] == c.cluster_of[t]);
+    for (int k = 0; k < 3; ++k)
+      CHECK(((c.boundary_edges[t] >> k & 1u) != 0) == (cube.edge_feature[cube.triangle_edges[t][k]] != 0));
+    // 0 on the border; inside, at most the centroid path to it (a face is 1 wide).
+    CHECK(c.distance[t] >= 0);
+    CHECK(c.distance[t] < 0.75);
+    if (c.boundary_edges[t] != 0) CHECK(c.distance[t] == 0);
+    else CHECK(c.distance[t] > 0);
+  }
+  // A sphere: normals turn by ~6° a triangle, so a 25° cone gathers several, a 0° one none;
+  // clusters are never wider than the cone allows (normals within 25° of the seed's).
+  const protect::Complex sphere = protect::build_complex(io::make_sphere(8));
+  const refine::TriangleClusters wide = refine::cluster_triangles(sphere, 25, 1);
+  const refine::TriangleClusters none = refine::cluster_triangles(sphere, 0, 1);
+  CHECK(wide.seed.size() * 4 < sphere.triangles.size());
+  CHECK(none.seed.size() == sphere.triangles.size());
+  const auto normal = [&](std::uint32_t t) {
+    const auto& v = sphere.triangles[t];
+    return Vec3((sphere.vertices[v[1]] - sphere.vertices[v[0]]).cross(sphere.vertices[v[2]] - sphere.vertices[v[0]]).normalized());
+  };
+  for (std::uint32_t t = 0; t < sphere.triangles.size(); ++t)
+    CHECK(normal(t).dot(normal(wide.seed[wide.cluster_of[t]])) >= std::cos(25 * M_PI / 180) - 1e-12);
 }
 
 TEST_CASE("PolygonDomain::surface_candidates lays a lattice on clusters of small triangles") {
