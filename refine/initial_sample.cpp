@@ -177,7 +177,10 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, std::
   std::vector<Vec3> blockers(fixed.begin(), fixed.end());
   for (const std::uint32_t i : chosen) blockers.push_back(candidates[i]);
   const std::size_t rest = candidates.size() - cover;
-  for (const std::uint32_t i : select_separated_points(candidates.subspan(cover), balls, blockers, spacing, part(cover, rest)))
+  std::vector<double> gap_local(part(cover, rest).begin(), part(cover, rest).end());
+  for (double& s : gap_local) s *= kGapFillSpacing;
+  for (const std::uint32_t i :
+       select_separated_points(candidates.subspan(cover), balls, blockers, kGapFillSpacing * spacing, gap_local))
     chosen.push_back(static_cast<std::uint32_t>(i + cover));
   return chosen;
 }

@@ -44,6 +44,14 @@ void check_selection(const std::vector<Vec3>& candidates, const std::vector<Weig
   }
 }
 
+// What select_sample asks of each candidate: the spacing for the lattice (the first `cover`),
+// kGapFillSpacing times it for the random candidates after it.
+std::vector<double> sample_spacings(std::size_t candidates, std::size_t cover, double spacing) {
+  std::vector<double> local(candidates, refine::kGapFillSpacing * spacing);
+  std::fill(local.begin(), local.begin() + static_cast<std::ptrdiff_t>(cover), spacing);
+  return local;
+}
+
 }  // namespace
 
 TEST_CASE("select_separated_points keeps the spacing from balls, fixed and chosen points, and misses nothing") {
@@ -371,7 +379,7 @@ TEST_CASE("PolygonDomain::surface_candidates lays a lattice on clusters of small
   }
   // The lattice is chosen first and most of the sample comes from it.
   const auto chosen = refine::select_sample(points, cover, {}, {}, spacing);
-  check_selection(points, {}, {}, spacing, chosen);
+  check_selection(points, {}, {}, spacing, chosen, sample_spacings(points.size(), cover, spacing));
   const auto from_lattice = std::count_if(chosen.begin(), chosen.end(), [&](std::uint32_t i) { return i < cover; });
   CHECK(static_cast<std::size_t>(from_lattice) > chosen.size() / 2);
 }
@@ -385,7 +393,8 @@ TEST_CASE("select_sample leaves no hole away from the edges of a cube's faces") 
   const auto [points, patches, cover] = candidates_of(domain, spacing);
   const std::vector<Vec3> fixed{{0.5, 0.5, 0}};
   const auto chosen = refine::select_sample(points, cover, {}, fixed, spacing);
-  check_selection(points, {}, fixed, spacing, chosen);  // the order: the lattice's points first
+  // The order: the lattice's points first; the random ones at the closer gap-filling spacing.
+  check_selection(points, {}, fixed, spacing, chosen, sample_spacings(points.size(), cover, spacing));
   std::vector<Vec3> sample(fixed);
   for (const std::uint32_t i : chosen) sample.push_back(points[i]);
   std::mt19937 rng(5);
