@@ -106,7 +106,7 @@ struct MesherStats {
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
   std::size_t sampled = 0;              ///< points of the initial sample
-  std::size_t full_sweeps = 0;          ///< full re-checks of the disk condition (>= 1 per run)
+  std::size_t full_sweeps = 0;          ///< full re-checks after the first (only after RefineBall)
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)
   std::string message;
@@ -166,6 +166,8 @@ class Mesher {
   std::vector<PointId> touched_;
   delaunay::ChangeSet changes_;
   std::size_t frame_points_ = 0;
+  // stats_.ball_refinements when every vertex was last checked (initialise, sweep_failures).
+  std::size_t refinements_at_full_check_ = 0;
   MesherStats stats_;
 };
 
