@@ -41,6 +41,36 @@ std::array<double, 2> strip_range(const std::array<Point2, 3>& t, double lo, dou
   return range;
 }
 
+// Whether some lattice site of the few rows a small triangle spans lies within `jitter` of the
+// triangle's box: most triangles of a finely tessellated model (fandisk's 13,000 at 2%) hold
+// none, and this spares them the clipping below (the lattice was 40% of the candidates' time
+// there). Triangles spanning more than four rows are not tested (true): the row loop, whose work
+// the caller caps, handles them.
+bool may_hold_site(const std::array<Point2, 3>& t, double step, double row, double jitter) {
+  const double xlo = std::min({t[0].x, t[1].x, t[2].x}) - jitter, xhi = std::max({t[0].x, t[1].x, t[2].x}) + jitter;
+  const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter, yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
+  // One row more on each side and a site more on each end than the box needs: rounding of the
+  // divisions never hides a site.
+  const auto first_row = static_cast<std::int64_t>(std::floor(ylo / row)) - 1;
+  const auto last_row = static_cast<std::int64_t>(std::ceil(yhi / row)) + 1;
+  if (last_row - first_row > 6) return true;
+  for (std::int64_t j = first_row; j <= last_row; ++j) {
+    const double y0 = static_cast<double>(j) * row;
+    if (y0 < ylo - 1e-9 * row || y0 > yhi + 1e-9 * row) continue;
+    const double shift = 0.5 * step * static_cast<double>(j & 1);
+    // The first site at or right of xlo is one of these three.
+    const double first = std::floor((xlo - shift) / step);
+    for (double i = first; i <= first + 2; ++i) {
+      const double cx = i * step + shift;
+      if (cx >= xlo - 1e-9 * step) {
+        if (cx <= xhi + 1e-9 * step) return true;
+        break;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 LatticeFrame lattice_frame(const Vec3& normal, const Vec3& point, double step) {
@@ -93,6 +123,7 @@ bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
   for (const Point2& p : t)
     if (!(std::max(std::fabs(p.x), std::fabs(p.y)) < 0x1.0p50 * step)) return true;
   const double row = step * std::sqrt(3.0) / 2;
+  if (!may_hold_site(t, step, row, jitter)) return true;
   // How far each barycentric coordinate can move under the jitter (gradient norm times radius),
   // with a relative margin for the rounding of both evaluations.
   const double reach_s = 1.0001 * jitter * std::sqrt((t[2].y - t[0].y) * (t[2].y - t[0].y) + (t[2].x - t[0].x) * (t[2].x - t[0].x)) / std::fabs(det) + 1e-12;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <functional>
+#include <queue>
 #include <random>
 
 #include <delpsc/io/shapes.h>
@@ -363,6 +365,54 @@ TEST_CASE("cluster_triangles: nearly parallel triangles grouped, boundaries and 
   };
   for (std::uint32_t t = 0; t < sphere.triangles.size(); ++t)
     CHECK(normal(t).dot(normal(wide.seed[wide.cluster_of[t]])) >= std::cos(25 * M_PI / 180) - 1e-12);
+}
+
+TEST_CASE("cluster_triangles: distances are the shortest centroid paths to the boundary, up to the horizon") {
+  // Against a plain Dijkstra with a binary heap over the same graph (triangles of one cluster
+  // across non-feature edges, centroid to centroid), on a finely divided sphere (many clusters)
+  // and the cube (6 big ones), with horizons that cut paths short and that do not.
+  for (const auto& soup : {io::make_sphere(24), io::make_cube(12)}) {
+    const protect::Complex complex = protect::build_complex(soup);
+    const std::size_t n = complex.triangles.size();
+    std::vector<Vec3> centroid(n);
+    for (std::size_t t = 0; t < n; ++t) {
+      const auto& v = complex.triangles[t];
+      centroid[t] = (complex.vertices[v[0]] + complex.vertices[v[1]] + complex.vertices[v[2]]) / 3;
+    }
+    for (const double horizon : {0.05, 0.2, 10.0}) {
+      const refine::TriangleClusters c = refine::cluster_triangles(complex, 25, horizon);
+      const auto across = [&](std::uint32_t t, int k) -> std::int64_t {
+        const std::uint32_t e = complex.triangle_edges[t][k];
+        if (complex.edge_feature[e] != 0) return -1;
+        for (std::uint32_t q = complex.edge_triangle_offsets[e]; q < complex.edge_triangle_offsets[e + 1]; ++q)
+          if (complex.edge_triangles[q] != t) return complex.edge_triangles[q];
+        return -1;
+      };
+      std::vector<double> reference(n, HUGE_VAL);
+      using Entry = std::pair<double, std::uint32_t>;
+      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+      for (std::uint32_t t = 0; t < n; ++t)
+        if (c.boundary_edges[t] != 0) heap.emplace(reference[t] = 0, t);
+      while (!heap.empty()) {
+        const auto [d, t] = heap.top();
+        heap.pop();
+        if (d > reference[t]) continue;
+        for (int k = 0; k < 3; ++k) {
+          const std::int64_t u = across(t, k);
+          if (u < 0 || c.cluster_of[u] != c.cluster_of[t]) continue;
+          const double du = d + (centroid[u] - centroid[t]).norm();
+          if (du < reference[u]) heap.emplace(reference[u] = du, static_cast<std::uint32_t>(u));
+        }
+      }
+      for (std::size_t t = 0; t < n; ++t) {
+        INFO("triangle " << t << ", horizon " << horizon);
+        if (reference[t] <= horizon)
+          CHECK(c.distance[t] == doctest::Approx(reference[t]).epsilon(1e-12));
+        else
+          CHECK(c.distance[t] > horizon);
+      }
+    }
+  }
 }
 
 TEST_CASE("PolygonDomain::surface_candidates lays a lattice on clusters of small triangles") {
