@@ -44,8 +44,8 @@ std::array<double, 2> strip_range(const std::array<Point2, 3>& t, double lo, dou
 // Whether some lattice site of the few rows a small triangle spans lies within `jitter` of the
 // triangle's box: most triangles of a finely tessellated model (fandisk's 13,000 at 2%) hold
 // none, and this spares them the clipping below (the lattice was 40% of the candidates' time
-// there). Triangles spanning more than four rows are not tested (true): the row loop, whose work
-// the caller caps, handles them.
+// there). Triangles whose padded box spans more than seven rows are not tested (true): the row
+// loop, whose work the caller caps, handles them.
 bool may_hold_site(const std::array<Point2, 3>& t, double step, double row, double jitter) {
   const double xlo = std::min({t[0].x, t[1].x, t[2].x}) - jitter, xhi = std::max({t[0].x, t[1].x, t[2].x}) + jitter;
   const double ylo = std::min({t[0].y, t[1].y, t[2].y}) - jitter, yhi = std::max({t[0].y, t[1].y, t[2].y}) + jitter;
