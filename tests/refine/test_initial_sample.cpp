@@ -286,6 +286,21 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     for (const Vec3& p : halves)
       if (inside(p)) CHECK(has(big, p));
     CHECK(in_square > 50);
+    // The same square in 2 x 48 x 48 triangles each far smaller than a lattice cell, most of
+    // which hold no site (the case may_hold_site skips): together, again exactly those points.
+    std::vector<Vec3> tiny;
+    constexpr int kCells = 48;
+    const double h = 1.0 / kCells;
+    for (int i = 0; i < kCells; ++i)
+      for (int j = 0; j < kCells; ++j) {
+        const Vec3 p0(i * h, j * h, 0), p1((i + 1) * h, j * h, 0), p2((i + 1) * h, (j + 1) * h, 0), p3(i * h, (j + 1) * h, 0);
+        refine::jittered_lattice(p0, p1, p2, step, jitter, tiny);
+        refine::jittered_lattice(p0, p2, p3, step, jitter, tiny);
+      }
+    for (const Vec3& p : big)
+      if (inside(p)) CHECK(has(tiny, p));
+    for (const Vec3& p : tiny)
+      if (inside(p)) CHECK(has(big, p));
   }
   // A cluster's triangle at an angle to the lattice's plane: points on it, still spaced (the
   // projection only shortens), covering it to the cover radius over the cosine of the angle.
