@@ -1,9 +1,10 @@
 // The mesher's initial sample (not in the paper; mesher.h says why it keeps the guarantees):
-// points of the patches chosen so that each one is power-farther than the spacing λ from every
-// protecting ball and from every point chosen before it, i.e. each one could have been inserted
-// by step 2(b) of Mesh2Complex (Dey & Levine 2009, §3), whose points have weighted distance above
-// λ to all points of S. Inserting them in one sorted batch instead of one at a time, each with a
-// restricted-facet update and a disk check, is the point: step 2 then starts close to its end.
+// points of the patches chosen so that each one is power-farther than a separation from every
+// protecting ball and from every point chosen before it - the spacing λ for the lattice's points,
+// kGapFillSpacing λ (0.9 λ) for the random points that fill its gaps - so each lies outside every
+// ball and the sample is a finite, well-spread set. Inserting it in one sorted batch instead of
+// one point at a time, each with a restricted-facet update and a disk check, is the point: step 2
+// of Mesh2Complex (Dey & Levine 2009, §3) then starts close to its end.
 //
 // Units: lengths of the coordinates; spacing > 0. Cost: O(n) expected for n candidates plus a
 // sort of the candidates by grid cell; memory O(n).

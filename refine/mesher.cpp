@@ -125,13 +125,15 @@ void Mesher::initialise() {
   touched_.clear();
   facets_.rebuild(touched_, tick);
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
+  refinements_at_full_check_ = stats_.ball_refinements;
 }
 
 void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
                                 std::vector<VertexPlace>& places) {
   // Candidates come at λ's density; with a sizing function each is tested against its own
-  // spacing min(λ, sizing(x)) (where sizing asks for less than λ the sample is only as dense as
-  // λ's, and refinement does the rest). A sizing function alone (no λ): the paper's start.
+  // spacing min(λ, sizing(x)) (scaled by kGapFillSpacing for the gap fillers; where sizing asks
+  // for less than λ the sample is only as dense as λ's, and refinement does the rest). A sizing
+  // function alone (no λ): the paper's start.
   if (!options_.initial_sample || !(options_.facet_size > 0)) return;
   std::vector<Vec3> candidates;
   std::vector<std::uint32_t> patches;

@@ -28,12 +28,14 @@
 //
 // Initialisation: the balls; for every patch without boundary (a component without features) a
 // few seed points where lines through its interior point meet it; unless initial_sample is off,
-// a sample of the patches whose every point is power-farther than λ from the balls, the seeds
-// and the sample points before it (initial_sample.h) - not in the paper, which starts from the
-// balls. Each such point could have been inserted by step 2(b), which only inserts points whose
-// weighted distance to all of S exceeds λ, so §3's packing argument for termination covers them
-// as it covers 2(b)'s, and the guarantees, which are about the state step 2 ends in (the disk
-// condition at every vertex, every size(t, σ) <= λ), are checked as before. What changes is the
+// a sample of the patches whose every point is power-farther than a separation (λ for the
+// lattice's points, 0.9 λ for the gap fillers) from the balls, the seeds and the sample points
+// before it (initial_sample.h) - not in the paper, which starts from the balls. The sample is a
+// finite set of points outside every ball (admissible, §2.1), inserted before step 2 starts:
+// §3's packing argument for termination is about step 2's own insertions, each of which is still
+// farther than λ from every point of S, so it holds as before (a finite start set only adds a
+// constant), and the guarantees, which are about the state step 2 ends in (the disk condition
+// at every vertex, every size(t, σ) <= λ), are checked as before. What changes is the
 // cost: the sample goes in as one spatially sorted batch and the restricted facets are computed
 // once, instead of ~40 dual-edge queries per point as facets are made and unmade level after
 // level (refinement -40 to -60% on the libcgal-demo models, 3-6% more vertices; BENCHMARKS.md);
@@ -79,10 +81,10 @@ struct MesherOptions {
                                   ///< at most kMaxFacetAngleDegrees (30); 0: off
   std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
-  /// Start step 2 from a λ-separated sample of the patches (initial_sample.h, and the file
+  /// Start step 2 from a well-spread sample of the patches (initial_sample.h, and the file
   /// comment) besides the balls and seeds; false: from the balls and seeds alone, as the paper.
-  /// Needs facet_size > 0; with `sizing` too, each sample point keeps min(λ, sizing) from the
-  /// others.
+  /// Needs facet_size > 0; with `sizing` too, each sample point's separation is min(λ, sizing)
+  /// (0.9 times that for the gap fillers).
   bool initial_sample = true;
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
@@ -106,7 +108,8 @@ struct MesherStats {
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
   std::size_t sampled = 0;              ///< points of the initial sample
-  std::size_t full_sweeps = 0;          ///< full re-checks after the first (only after RefineBall)
+  std::size_t full_sweeps = 0;          ///< closing full re-checks (initialise's first one not
+                                        ///< counted; one only after a RefineBall since the last)
   bool stopped_at_max_vertices = false;
   bool stuck = false;                   ///< a failure no step could address (see message)
   std::string message;
@@ -166,7 +169,8 @@ class Mesher {
   std::vector<PointId> touched_;
   delaunay::ChangeSet changes_;
   std::size_t frame_points_ = 0;
-  // stats_.ball_refinements when every vertex was last checked (initialise, sweep_failures).
+  // stats_.ball_refinements when every vertex was last checked (end of initialise,
+  // sweep_failures): the closing full pass runs only if RefineBall happened since.
   std::size_t refinements_at_full_check_ = 0;
   MesherStats stats_;
 };

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <random>
 
@@ -385,7 +385,8 @@ TEST_CASE("cluster_triangles: nearly parallel triangles grouped, boundaries and 
 TEST_CASE("cluster_triangles: distances are the shortest centroid paths to the boundary, up to the horizon") {
   // Against a plain Dijkstra with a binary heap over the same graph (triangles of one cluster
   // across non-feature edges, centroid to centroid), on a finely divided sphere (many clusters)
-  // and the cube (6 big ones), with horizons that cut paths short and that do not.
+  // and the cube (6 big ones), with horizons that cut paths short, that do not, that leave only
+  // the boundary, and none at all (infinite or NaN).
   for (const auto& soup : {io::make_sphere(24), io::make_cube(12)}) {
     const protect::Complex complex = protect::build_complex(soup);
     const std::size_t n = complex.triangles.size();
@@ -394,7 +395,7 @@ TEST_CASE("cluster_triangles: distances are the shortest centroid paths to the b
       const auto& v = complex.triangles[t];
       centroid[t] = (complex.vertices[v[0]] + complex.vertices[v[1]] + complex.vertices[v[2]]) / 3;
     }
-    for (const double horizon : {0.05, 0.2, 10.0}) {
+    for (const double horizon : {0.05, 0.2, 10.0, 0.0, -1.0, HUGE_VAL, std::nan("")}) {
       const refine::TriangleClusters c = refine::cluster_triangles(complex, 25, horizon);
       const auto across = [&](std::uint32_t t, int k) -> std::int64_t {
         const std::uint32_t e = complex.triangle_edges[t][k];
@@ -419,9 +420,12 @@ TEST_CASE("cluster_triangles: distances are the shortest centroid paths to the b
           if (du < reference[u]) heap.emplace(reference[u] = du, static_cast<std::uint32_t>(u));
         }
       }
+      const bool none = !(horizon < HUGE_VAL);
       for (std::size_t t = 0; t < n; ++t) {
         INFO("triangle " << t << ", horizon " << horizon);
-        if (reference[t] <= horizon)
+        if (reference[t] == HUGE_VAL)  // a cluster without boundary
+          CHECK(c.distance[t] == HUGE_VAL);
+        else if (none || reference[t] <= horizon)
           CHECK(c.distance[t] == doctest::Approx(reference[t]).epsilon(1e-12));
         else
           CHECK(c.distance[t] > horizon);
