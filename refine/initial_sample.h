@@ -40,7 +40,7 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
 /// all 241 step-2(b) insertions lay 1.01-1.23 λ from an edge with sizes 1.00-1.08 λ, and more
 /// candidates hardly helped (241 -> 211 at four times the density). Each such insertion costs
 /// several batch points. At 0.9 most pockets close (cube 241 -> 152, fandisk 149 -> 70 at 2%;
-/// anchor 1,407 -> 673, elephant 1,260 -> 580 at 0.5%) for ~1-2% more vertices. The paper's
+/// anchor 1,407 -> 673, elephant 1,260 -> 580 at 0.5%) for 0-2.5% more vertices. The paper's
 /// termination argument (§3: each step-2 insertion is farther than λ from every other point)
 /// is about the loop's insertions; a finite initial sample may be as dense as it likes.
 inline constexpr double kGapFillSpacing = 0.9;

@@ -30,8 +30,6 @@ struct CoplanarSpan {
   Vec3 p0, p1;
 };
 
-
-
 }  // namespace
 
 PolygonDomain::PolygonDomain(protect::Complex complex)
