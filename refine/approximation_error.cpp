@@ -12,6 +12,8 @@
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
 
+#include "triangle_samples.h"
+
 namespace delpsc::refine {
 
 namespace {
@@ -132,11 +134,6 @@ class FarthestSample {
   double largest_squared_ = 0;  // result_.distance squared
 };
 
-/// Pieces of step <= h along a length (at least 1).
-std::size_t pieces(double length, double h) {
-  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
-}
-
 /// The surface samples of the header: per triangle its corners not sampled yet (so each vertex
 /// once), then triangle_samples. Only the triangles from index `first` on; the corners of those
 /// before count as sampled, so that splitting the triangles between threads samples every vertex
@@ -164,7 +161,7 @@ void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> tr
 void sample_polyline(std::span<const Vec3> vertices, std::span<const Triangle> segments, double h, FarthestSample& to) {
   for (const Triangle& s : segments) {
     const Vec3 &a = vertices[s[0]], &b = vertices[s[1]];
-    const std::size_t n = pieces((b - a).norm(), h);
+    const std::size_t n = sample_pieces((b - a).norm(), h);
     for (std::size_t k = 0; k <= n; ++k) to.sample(a + (static_cast<double>(k) / static_cast<double>(n)) * (b - a));
   }
 }
@@ -232,41 +229,6 @@ EdgesByCurve group_edges(const io::SurfaceMesh& output, std::uint32_t curve_coun
 }
 
 }  // namespace
-
-void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, std::vector<Vec3>& out) {
-  // Rows parallel to the longest edge ab, from ab (row 0) towards the apex c, at most
-  // (sqrt(3) / 2) h apart, each cut into pieces of length <= h. The longest edge is opposite the
-  // largest angle, so the angles at a and b are not obtuse: the cross-sections shrink from
-  // ab to c, and a point p between rows i and i + 1 is within (sqrt(3) / 2) h of its foot on
-  // row i, which lies in row i's segment, itself within h / 2 of a sample of that row: p is
-  // within sqrt(3/4 + 1/4) h = h of a sample. Needle triangles get ~area / h² samples, where a
-  // barycentric grid of step longest edge / h gets ~(longest edge / h)².
-  const std::array<Vec3, 3> v{a0, b0, c0};
-  int k = 0;
-  double longest = -1;
-  for (int i = 0; i < 3; ++i)
-    if (const double l = (v[(i + 1) % 3] - v[i]).squaredNorm(); l > longest) longest = l, k = i;
-  const Vec3 &a = v[k], &b = v[(k + 1) % 3], &c = v[(k + 2) % 3];
-  // Not finite (a NaN or infinite coordinate, or h): nothing, rather than a count cast from NaN.
-  if (!a0.allFinite() || !b0.allFinite() || !c0.allFinite() || !(h > 0) || !std::isfinite(h)) return;
-  if (!(longest > 0)) return;
-  // Height of c over ab, through the area: |ab x ac| / |ab|.
-  const double height = (b - a).cross(c - a).norm() / std::sqrt(longest);
-  const double row_step = std::sqrt(3.0) / 2 * h;
-  const std::size_t rows = pieces(height, row_step);
-  for (std::size_t i = 0; i < rows; ++i) {
-    // Row i joins the points at fraction f of the way from a to c and from b to c (row 0 is ab).
-    const double f = static_cast<double>(i) / static_cast<double>(rows);
-    const Vec3 left = a + f * (c - a), right = b + f * (c - b);
-    const double length = (right - left).norm();
-    const std::size_t n = pieces(length, h);
-    for (std::size_t j = 0; j <= n; ++j) {
-      if (i == 0 && (j == 0 || j == n)) continue;  // a and b: corners
-      const double g = static_cast<double>(j) / static_cast<double>(n);
-      out.push_back(left + g * (right - left));
-    }
-  }
-}
 
 double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
 

@@ -85,11 +85,6 @@ struct ApproximationError {
   double relative(double d) const { return diagonal > 0 ? d / diagonal : d; }
 };
 
-/// The samples of triangle abc other than its corners, appended to `out` (see the file comment):
-/// every point of the triangle is within h of one of them or of a corner. O(area / h² + perimeter
-/// / h + 1) points; none for a triangle reduced to a point, a coordinate or h not finite, or h <= 0.
-void triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double h, std::vector<Vec3>& out);
-
 /// Measures `output` against the polygon mesh of `input` (see the file comment). Output labels
 /// are the input complex's ids (as the mesher writes them). Throws std::invalid_argument if h is
 /// not positive and finite, a vertex of `output` is not finite, an index is out of range, or edge_curve has neither

@@ -19,6 +19,7 @@
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
+#include <delpsc/refine/triangle_samples.h>
 
 using namespace delpsc;
 using refine::ApproximationError;
@@ -204,6 +205,8 @@ TEST_CASE("triangle_samples: every point within h of a sample or corner, ~area /
     const double h = 0.02 + 0.3 * unit(rng);
     samples.assign({a, b, c});
     refine::triangle_samples(a, b, c, h, samples);
+    // The count without the points agrees (the initial sample's net budgets with it).
+    CHECK(refine::triangle_sample_count(a, b, c, h) == static_cast<double>(samples.size() - 3));
     const double area = 0.5 * (b - a).cross(c - a).norm();
     const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
     INFO("round " << round << " h=" << h << " area=" << area << " samples=" << samples.size());
@@ -226,6 +229,12 @@ TEST_CASE("triangle_samples: every point within h of a sample or corner, ~area /
   refine::triangle_samples(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), nan, samples);
   refine::triangle_samples(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), inf, samples);
   CHECK(samples.empty());
+  CHECK(refine::triangle_sample_count(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), 0.1) == 0);
+  CHECK(refine::triangle_sample_count(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, nan, 0), 0.1) == 0);
+  CHECK(refine::triangle_sample_count(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), nan) == 0);
+  // A needle 1e30 pieces long: counted in one row's time, not made.
+  CHECK(refine::triangle_sample_count(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-31, 0), 1e-30) ==
+        doctest::Approx(1e30).epsilon(1e-9));
 }
 
 TEST_CASE("the walk and the tree find what measuring every sample against every triangle finds") {
