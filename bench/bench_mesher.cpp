@@ -87,27 +87,29 @@ void initial_sample(benchmark::State& state, const Model& m) {
   for (auto _ : state) {
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
-    const std::size_t cover = m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
+    const refine::CandidateParts parts = m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
     candidates = points.size();
-    chosen = refine::select_sample(points, cover, balls, {}, m.lambda).size();
+    chosen = refine::select_sample(points, parts, balls, {}, m.lambda).size();
   }
   state.counters["candidates"] = static_cast<double>(candidates);
   state.counters["chosen"] = static_cast<double>(chosen);
 }
 
-// The candidates alone (clusters, lattice, random points near the clusters' boundaries) at a
-// coarser size: their cost per triangle is fixed, so it shows where the mesh is small.
+// The candidates alone (clusters, lattice, random points near the clusters' boundaries, net) at
+// a coarser size: their cost per triangle is fixed, so it shows where the mesh is small.
 void candidates(benchmark::State& state, const Model& m, double scale) {
-  std::size_t count = 0, cover = 0;
+  std::size_t count = 0;
+  refine::CandidateParts parts;
   for (auto _ : state) {
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
-    cover = m.domain->surface_candidates(scale * m.lambda, 0xffffffffu, points, patches);
+    parts = m.domain->surface_candidates(scale * m.lambda, 0xffffffffu, points, patches);
     count = points.size();
     benchmark::DoNotOptimize(points);
   }
   state.counters["candidates"] = static_cast<double>(count);
-  state.counters["lattice"] = static_cast<double>(cover);
+  state.counters["lattice"] = static_cast<double>(parts.lattice);
+  state.counters["net"] = static_cast<double>(parts.net);
 }
 
 // Everything `delpsc mesh --size 2%` times, as the comparison with CGAL does (bench/cgal): the

@@ -22,6 +22,8 @@
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/point.h>
 
+#include "initial_sample.h"
+
 namespace delpsc::refine {
 
 /// A point where a segment or ray meets a patch.
@@ -108,13 +110,14 @@ class Domain {
   /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and
   /// spread evenly over it (the mesher keeps ~1 in 6; a gap is no error, refinement fills it);
   /// the same points on every call. None at all when they would be more than `budget`. Returns
-  /// how many of the appended points, at the front, form a cover to be chosen from first
-  /// (select_sample; 0: none). The default appends none: the mesher then starts from the balls
-  /// and the seeds alone, as the paper does.
-  virtual std::size_t surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                                  std::vector<std::uint32_t>& patches) const {
+  /// the parts they form (CandidateParts): a cover to be chosen from first, and a net to be
+  /// chosen from last whose radius the mesher may rely on (a promise: every point of every patch
+  /// within net_radius of a net point). The default appends none: the mesher then starts from
+  /// the balls and the seeds alone, as the paper does.
+  virtual CandidateParts surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
+                                            std::vector<std::uint32_t>& patches) const {
     (void)spacing, (void)budget, (void)points, (void)patches;
-    return 0;
+    return {};
   }
 };
 

@@ -109,12 +109,27 @@ class PointGrid {
 
 }  // namespace
 
-std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
-                                                   std::span<const WeightedPoint> balls,
-                                                   std::span<const Vec3> fixed, double spacing,
-                                                   std::span<const double> local_spacing) {
+namespace {
+
+// Consecutive candidates [from, from + count) tested at scale × spacing (× their local spacing).
+struct SelectionPart {
+  std::size_t from = 0, count = 0;
+  double scale = 1;
+};
+
+// select_separated_points over consecutive parts of `candidates`, in one grid: each part's
+// candidates, in cell order, against the balls, the fixed points and everything chosen before
+// (in earlier parts too). One grid instead of one per part spares re-adding every point chosen
+// so far (the net's part costs half as much). decided[k] (if given, one per part): whether part
+// k's every candidate was decided. Parts' scales in (0, 1].
+std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std::span<const SelectionPart> parts,
+                                           std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
+                                           double spacing, std::span<const double> local_spacing, bool* decided) {
   std::vector<std::uint32_t> chosen;
-  if (!(spacing > 0) || !std::isfinite(spacing) || candidates.empty() || candidates.size() > 0xffffffffu)
+  if (decided) std::fill(decided, decided + parts.size(), false);
+  const bool local = !local_spacing.empty();
+  if (!(spacing > 0) || !std::isfinite(spacing) || candidates.size() > 0xffffffffu ||
+      (local && local_spacing.size() != candidates.size()))
     return chosen;
   // A ball B(c, r) rejects x when |x - c|² - r² <= spacing², so within sqrt(spacing² + r²);
   // a point within spacing: one cell of that size around x's reaches them all. The relative
@@ -123,83 +138,99 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
   for (const WeightedPoint& b : balls) largest_weight = std::max(largest_weight, b.w);
   const double cell = std::sqrt(spacing * spacing + largest_weight) * (1 + 1e-9);
   kernel::Box3 box;
-  std::vector<std::uint32_t> order;
-  order.reserve(candidates.size());
-  const bool local = !local_spacing.empty();
-  if (local && local_spacing.size() != candidates.size()) return chosen;
-  for (std::uint32_t i = 0; i < candidates.size(); ++i)
-    if (candidates[i].allFinite() && (!local || (local_spacing[i] > 0 && local_spacing[i] <= spacing))) {
-      box.extend(candidates[i]);
-      order.push_back(i);
-    }
+  std::vector<std::vector<std::uint32_t>> order(parts.size());
+  std::size_t valid = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    order[k].reserve(parts[k].count);
+    for (std::size_t i = parts[k].from; i < parts[k].from + parts[k].count; ++i)
+      if (candidates[i].allFinite() && (!local || (local_spacing[i] > 0 && local_spacing[i] <= spacing))) {
+        box.extend(candidates[i]);
+        order[k].push_back(static_cast<std::uint32_t>(i));
+      }
+    valid += order[k].size();
+  }
   // Written to refuse NaN too (a spacing whose square underflows gives a zero cell).
-  if (order.empty() || !(cell > 0) || !((box.hi - box.lo).maxCoeff() / cell <= double{1 << 19})) return chosen;
+  if (valid == 0 || !(cell > 0) || !((box.hi - box.lo).maxCoeff() / cell <= double{1 << 19})) return chosen;
+  if (decided)
+    for (std::size_t k = 0; k < parts.size(); ++k) decided[k] = order[k].size() == parts[k].count;
   PointGrid grid(box.lo, cell);
-  // Cell order (then index): the candidates of a cell are tested one after another against the
-  // same 27 chains, found once per cell, and the chosen points pack like a scan line.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
-  keyed.reserve(order.size());
-  for (const std::uint32_t i : order) keyed.emplace_back(PointGrid::pack(grid.cell_of(candidates[i])), i);
-  kernel::radix_sort_by_key(keyed);  // stable: equal cells keep index order
+  // Cell order (then index) within a part: the candidates of a cell are tested one after
+  // another against the same 27 chains, found once per cell, and the chosen points pack like a
+  // scan line.
+  std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> keyed(parts.size());
   std::size_t candidate_cells = 0;
-  for (std::size_t k = 0; k < keyed.size(); ++k) candidate_cells += k == 0 || keyed[k].first != keyed[k - 1].first;
-  grid.reserve(balls.size() + fixed.size() + candidate_cells, balls.size() + fixed.size() + keyed.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    keyed[k].reserve(order[k].size());
+    for (const std::uint32_t i : order[k]) keyed[k].emplace_back(PointGrid::pack(grid.cell_of(candidates[i])), i);
+    kernel::radix_sort_by_key(keyed[k]);  // stable: equal cells keep index order
+    for (std::size_t j = 0; j < keyed[k].size(); ++j)
+      candidate_cells += j == 0 || keyed[k][j].first != keyed[k][j - 1].first;
+  }
+  grid.reserve(balls.size() + fixed.size() + candidate_cells, balls.size() + fixed.size() + valid);
   for (const WeightedPoint& b : balls) grid.add(b);
   for (const Vec3& p : fixed) grid.add(WeightedPoint::from(p));
-  const double limit = spacing * spacing;
-  std::size_t own = 0;                   // the cell's own slot
-  std::array<std::uint32_t, 27> heads{};  // heads[0]: the cell's own chain, tested first
-  std::size_t occupied = 0;              // heads[1 .. occupied): its neighbours with points
-  std::uint64_t current = 0;
-  for (std::size_t k = 0; k < keyed.size(); ++k) {
-    const auto [key, i] = keyed[k];
-    if (k == 0 || key != current) {
-      // The neighbours' chains, once per cell: only this cell gains points until the next one.
-      current = key;
-      const auto c = grid.cell_of(candidates[i]);
-      own = grid.slot_of(key);
-      occupied = 1;
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy)
-          for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            if (dx == 0 && dy == 0 && dz == 0) continue;
-            const std::uint32_t head = grid.head_of(PointGrid::pack({c[0] + dx, c[1] + dy, c[2] + dz}));
-            if (head != PointGrid::kEmpty) heads[occupied++] = head;
-          }
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const double part_spacing = parts[k].scale * spacing;
+    std::size_t own = 0;                   // the cell's own slot
+    std::array<std::uint32_t, 27> heads{};  // heads[0]: the cell's own chain, tested first
+    std::size_t occupied = 0;              // heads[1 .. occupied): its neighbours with points
+    std::uint64_t current = 0;
+    for (std::size_t j = 0; j < keyed[k].size(); ++j) {
+      const auto [key, i] = keyed[k][j];
+      if (j == 0 || key != current) {
+        // The neighbours' chains, once per cell: only this cell gains points until the next one.
+        current = key;
+        const auto c = grid.cell_of(candidates[i]);
+        own = grid.slot_of(key);
+        occupied = 1;
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+          for (std::int64_t dy = -1; dy <= 1; ++dy)
+            for (std::int64_t dz = -1; dz <= 1; ++dz) {
+              if (dx == 0 && dy == 0 && dz == 0) continue;
+              const std::uint32_t head = grid.head_of(PointGrid::pack({c[0] + dx, c[1] + dy, c[2] + dz}));
+              if (head != PointGrid::kEmpty) heads[occupied++] = head;
+            }
+      }
+      heads[0] = grid.head(own);
+      const Vec3& x = candidates[i];
+      const double s = local ? parts[k].scale * local_spacing[i] : part_spacing;
+      if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
+                      [&](std::uint32_t head) { return grid.chain_within(head, x, s * s); }))
+        continue;
+      grid.add_at(own, key, WeightedPoint::from(x));
+      chosen.push_back(i);
     }
-    heads[0] = grid.head(own);
-    const Vec3& x = candidates[i];
-    const double own_limit = local ? local_spacing[i] * local_spacing[i] : limit;
-    if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
-                    [&](std::uint32_t head) { return grid.chain_within(head, x, own_limit); }))
-      continue;
-    grid.add_at(own, key, WeightedPoint::from(x));
-    chosen.push_back(i);
   }
   return chosen;
 }
 
-std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, std::size_t cover,
+}  // namespace
+
+std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candidates,
+                                                   std::span<const WeightedPoint> balls,
+                                                   std::span<const Vec3> fixed, double spacing,
+                                                   std::span<const double> local_spacing, bool* decided) {
+  const SelectionPart whole{0, candidates.size(), 1};
+  return select_in_parts(candidates, {&whole, 1}, balls, fixed, spacing, local_spacing, decided);
+}
+
+std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
-                                         double spacing, std::span<const double> local_spacing) {
-  // Indices are 32-bit; each call below checks only its own part.
-  if (candidates.size() > 0xffffffffu) return {};
-  cover = std::min(cover, candidates.size());
-  const bool local = !local_spacing.empty();
-  if (local && local_spacing.size() != candidates.size()) return {};
-  const auto part = [&](std::size_t from, std::size_t count) {
-    return local ? local_spacing.subspan(from, count) : std::span<const double>{};
-  };
-  std::vector<std::uint32_t> chosen = select_separated_points(candidates.first(cover), balls, fixed, spacing, part(0, cover));
-  std::vector<Vec3> blockers(fixed.begin(), fixed.end());
-  for (const std::uint32_t i : chosen) blockers.push_back(candidates[i]);
-  const std::size_t rest = candidates.size() - cover;
-  std::vector<double> gap_local(part(cover, rest).begin(), part(cover, rest).end());
-  for (double& s : gap_local) s *= kGapFillSpacing;
-  for (const std::uint32_t i :
-       select_separated_points(candidates.subspan(cover), balls, blockers, kGapFillSpacing * spacing, gap_local))
-    chosen.push_back(static_cast<std::uint32_t>(i + cover));
+                                         double spacing, std::span<const double> local_spacing, bool* net_decided) {
+  const std::size_t lattice = std::min(parts.lattice, candidates.size());
+  const std::size_t net = std::min(parts.net, candidates.size() - lattice);
+  const std::array<SelectionPart, 3> three{SelectionPart{0, lattice, 1},
+                                           SelectionPart{lattice, candidates.size() - lattice - net, kGapFillSpacing},
+                                           SelectionPart{candidates.size() - net, net, kGapFillSpacing}};
+  std::array<bool, 3> decided{};
+  std::vector<std::uint32_t> chosen = select_in_parts(candidates, three, balls, fixed, spacing, local_spacing, decided.data());
+  if (net_decided) *net_decided = net > 0 && decided[2];
   return chosen;
+}
+
+double sample_cover_power(double spacing, double net_radius, double largest_ball_radius) {
+  const double s = spacing, h = net_radius, r = largest_ball_radius;
+  return s * s + h * h + 2 * h * std::sqrt(s * s + r * r);
 }
 
 }  // namespace delpsc::refine

@@ -123,7 +123,8 @@ void Mesher::initialise() {
   // The frame points' power cells miss the domain (mesher.h): their facets need no query.
   facets_.exclude_vertices(std::span<const PointId>(ids).first(frame_points_));
   touched_.clear();
-  facets_.rebuild(touched_, tick);
+  // The sample's proven cover spares most of the first examination's queries (rebuild).
+  facets_.rebuild(touched_, tick, sample_cover_power_);
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
   refinements_at_full_check_ = stats_.ball_refinements;
 }
@@ -141,11 +142,13 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   // cap and are not even made (a size far too small for the cap would otherwise exhaust memory
   // here, at ~50 bytes a candidate); fewer may still not fit, which is checked below.
   const std::size_t budget = options_.max_vertices > 0 ? 8 * options_.max_vertices : 0xffffffffu;
-  const std::size_t cover = domain_->surface_candidates(options_.facet_size, budget, candidates, patches);
+  const CandidateParts parts = domain_->surface_candidates(options_.facet_size, budget, candidates, patches);
   std::vector<WeightedPoint> balls;
+  double largest_radius = 0;
   for (const BallKey k : keys) {
     const ProtectingBall b = balls_->ball(k);
     balls.push_back(WeightedPoint::from(b.centre, b.radius * b.radius));
+    largest_radius = std::max(largest_radius, b.radius);
   }
   std::vector<Vec3> fixed;  // the seeds chosen above
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -157,8 +160,9 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
       if (const double s = options_.sizing(candidates[i]); s > 0) local[i] = std::min(options_.facet_size, s);
       // else 0 (also for NaN): the candidate is skipped; FacetCriteria reports a bad sizing
   }
+  bool net_decided = false;
   const std::vector<std::uint32_t> chosen =
-      select_sample(candidates, cover, balls, fixed, options_.facet_size, local);
+      select_sample(candidates, parts, balls, fixed, options_.facet_size, local, &net_decided);
   // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.
@@ -168,6 +172,11 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
     places.push_back(on_patch(patches[i]));
     ++stats_.sampled;
   }
+  // Every ball, seed and chosen point goes into the triangulation (a hidden one is dominated
+  // by the vertices there), which is what the bound assumes; the net was chosen from at the
+  // gap fillers' spacing.
+  if (net_decided && parts.net_radius > 0)
+    sample_cover_power_ = sample_cover_power(kGapFillSpacing * options_.facet_size, parts.net_radius, largest_radius);
 }
 
 void Mesher::recheck(PointId p) {

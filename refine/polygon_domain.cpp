@@ -9,6 +9,7 @@
 
 #include "surface_lattice.h"
 #include "triangle_clusters.h"
+#include "triangle_samples.h"
 
 namespace delpsc::refine {
 
@@ -135,9 +136,9 @@ std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) c
   return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
 }
 
-std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                                              std::vector<std::uint32_t>& patches) const {
-  if (!(spacing > 0) || !std::isfinite(spacing)) return 0;
+CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
+                                                 std::vector<std::uint32_t>& patches) const {
+  if (!(spacing > 0) || !std::isfinite(spacing)) return {};
   const double per_area = 4.0 / (spacing * spacing);
   const double step = kLatticeStep * spacing, jitter = kLatticeJitter * spacing;
   std::vector<double> expected_in(complex_.triangles.size());
@@ -147,8 +148,16 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
     const Vec3 &a = complex_.vertices[tri[0]], &b = complex_.vertices[tri[1]], &c = complex_.vertices[tri[2]];
     total += expected_in[t] = 0.5 * (b - a).cross(c - a).norm() * per_area;
   }
-  if (!(total <= static_cast<double>(budget))) return 0;  // also when not finite
+  if (!(total <= static_cast<double>(budget))) return {};  // also when not finite
   const std::size_t start = points.size();
+  // The net (made last, below): triangle_samples at kNetRadius spacings and every vertex of a
+  // triangle. Counted first, so that the budget bounds it too; left out when it does not fit.
+  const double net_radius = kNetRadius * spacing;
+  double net_expected = static_cast<double>(complex_.vertices.size());
+  for (const auto& tri : complex_.triangles)
+    net_expected += triangle_sample_count(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius);
+  const bool net_fits = total + net_expected <= static_cast<double>(budget);
+  if (net_fits) total += net_expected;
 
   // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
   // lattice point each: random candidates serve them as well), first: the mesher chooses from it
@@ -242,13 +251,31 @@ std::size_t PolygonDomain::surface_candidates(double spacing, std::size_t budget
           uniform_in(u + step_uv, v, u, v + step_uv, u + step_uv, v + step_uv);
       }
   }
+  CandidateParts parts;
+  parts.lattice = lattice;
+  if (net_fits) {
+    const std::size_t net_start = points.size();
+    std::vector<std::uint8_t> corner_done(complex_.vertices.size(), 0);
+    for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
+      const auto& tri = complex_.triangles[t];
+      for (const std::uint32_t v : tri)
+        if (!corner_done[v]) {
+          corner_done[v] = 1;
+          points.push_back(complex_.vertices[v]);
+        }
+      triangle_samples(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius, points);
+      patches.resize(points.size(), complex_.triangle_patch[t]);
+    }
+    parts.net = points.size() - net_start;
+    parts.net_radius = net_radius;
+  }
   // The stratified counts may pass their expectation: the promise is none at all then.
   if (points.size() - start > budget) {
     points.resize(start);
     patches.resize(start);
-    return 0;
+    return {};
   }
-  return lattice;
+  return parts;
 }
 
 }  // namespace delpsc::refine

@@ -61,9 +61,11 @@ class PolygonDomain final : public Domain {
   /// normals within kClusterAngle of the seed's) of at least spacing² / 2 (surface_lattice.h;
   /// the count returned), then per triangle a number of uniform random points proportional to
   /// its area, in a cluster with a lattice only within ~2.5 spacings of the cluster's boundary
-  /// (deterministic: the generator is seeded by the triangle's index). O(T log T + points).
-  std::size_t surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                          std::vector<std::uint32_t>& patches) const override;
+  /// (deterministic: the generator is seeded by the triangle's index), then the net: every
+  /// vertex of a triangle and each triangle's triangle_samples at kNetRadius spacings, when it
+  /// fits in what the budget leaves. O(T log T + points).
+  CandidateParts surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
+                                    std::vector<std::uint32_t>& patches) const override;
 
  private:
   // Merges the tree's per-triangle hits into per-patch hits (see the file comment). `b` is the

@@ -87,11 +87,10 @@ void RestrictedFacets::forget_record(std::uint32_t s) {
 // models were first met with, and it ends their refinement (on the prism with a short curve
 // refined by the paper's global step 2(a), dual_on_facet_line for every facet ran to the test's
 // cap of 30,000 vertices where this ends after 1,900 insertions), so flat cells keep it.
-delaunay::VoronoiEdge RestrictedFacets::dual_projected(delaunay::Facet f, const std::array<PointId, 3>& t) const {
+delaunay::VoronoiEdge RestrictedFacets::dual_projected(delaunay::Facet f, const std::optional<FacetLine>& line) const {
   delaunay::VoronoiEdge e = dt_->dual(f);
-  const auto line = facet_line(t);
   if (!line) return e;
-  const auto& [o, n, power] = *line;
+  const Vec3 &o = line->orthocentre, &n = line->normal;
   e.source = o + (e.source - o).dot(n) * n;
   if (e.is_ray)
     e.direction = e.direction.dot(n) >= 0 ? n : Vec3(-n);
@@ -103,9 +102,12 @@ delaunay::VoronoiEdge RestrictedFacets::dual_projected(delaunay::Facet f, const 
 std::optional<RestrictedFacets::FacetLine> RestrictedFacets::facet_line(const std::array<PointId, 3>& t) const {
   const WeightedPoint &a = dt_->point(t[0]), &b = dt_->point(t[1]), &c = dt_->point(t[2]);
   const auto centre = kernel::orthocentre(a, b, c);
-  const Vec3 n = (b.point() - a.point()).cross(c.point() - a.point()).normalized();
+  const Vec3 ab = b.point() - a.point(), ac = c.point() - a.point();
+  const Vec3 cross = ab.cross(ac);
+  const Vec3 n = cross.normalized();
   if (!centre || !n.allFinite()) return std::nullopt;
-  return FacetLine{centre->point(), n, (centre->point() - a.point()).squaredNorm() - a.w};
+  return FacetLine{centre->point(), n, (centre->point() - a.point()).squaredNorm() - a.w,
+                   cross.squaredNorm() / (ab.squaredNorm() * ac.squaredNorm())};
 }
 
 // V_t lies on the line of points power-equidistant from t's three vertices: through t's own
@@ -118,11 +120,11 @@ std::optional<RestrictedFacets::FacetLine> RestrictedFacets::facet_line(const st
 // equidistant from t's vertices, as size(t, σ) assumes. For a well-conditioned facet (both
 // cells finite and far from flat, see well_conditioned) it agrees with the orthocentres to
 // rounding; examine() uses it only then.
-delaunay::VoronoiEdge RestrictedFacets::dual_on_facet_line(delaunay::Facet f, const std::array<PointId, 3>& t) const {
+delaunay::VoronoiEdge RestrictedFacets::dual_on_facet_line(delaunay::Facet f, const std::optional<FacetLine>& line) const {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  const auto line = facet_line(t);
   if (!line) return {Vec3::Constant(kNaN), Vec3::Constant(kNaN), Vec3::Zero(), false};
-  const auto& [o, n, p] = *line;
+  const Vec3 &o = line->orthocentre, &n = line->normal;
+  const double p = line->power;
   const auto end = [&](delaunay::Facet side) {
     const WeightedPoint& d = dt_->point(dt_->vertex(side.cell, side.index));
     const Vec3 od = o - d.point();
@@ -155,7 +157,7 @@ bool RestrictedFacets::well_conditioned(Facet f) const {
   return ab.cross(ac).squaredNorm() > kRatio * kRatio * ab.squaredNorm() * ac.squaredNorm();
 }
 
-void RestrictedFacets::examine(Facet f) {
+void RestrictedFacets::examine(Facet f, double cover_power) {
   // Vertices in increasing order: t's orthocentre and line (so the dual edge) and the record do
   // not depend on which cell the facet is seen from.
   std::array<PointId, 3> v = dt_->facet_vertices(f);
@@ -163,10 +165,16 @@ void RestrictedFacets::examine(Facet f) {
   // V_t lies in the power cell of an excluded vertex, which misses the domain: no record, and an
   // outcome update() may carry over (it stays true however the cells change).
   if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;
+  const std::optional<FacetLine> line = facet_line(v);
+  // Beyond the proven cover (rebuild): V_t misses the domain, whatever the cells (the bound is
+  // on t's own line), so the outcome may be carried over as a queried one's. The shape test
+  // keeps P's rounding far below the margin: t's angle at a is above 0.06°.
+  constexpr double kCoverMargin = 1.01, kShapeFloor = 1e-6;
+  if (line && line->power > kCoverMargin * cover_power && line->shape > kShapeFloor) return;
   // Computed first: it decides how to compute the dual edge and whether update() may carry the
   // outcome over (false for a hull facet, whose dual is a ray).
   const bool conditioned = well_conditioned(f);
-  const delaunay::VoronoiEdge e = conditioned ? dual_on_facet_line(f, v) : dual_projected(f, v);
+  const delaunay::VoronoiEdge e = conditioned ? dual_on_facet_line(f, line) : dual_projected(f, line);
   if (!e.source.allFinite() || !(e.is_ray ? e.direction : e.target).allFinite()) {
     // A cell flat in doubles (four co-circular points of a planar patch, typically) has no
     // orthocentre: its end of the edge is NaN or inf, and a query with such an end reports garbage
@@ -295,7 +303,7 @@ void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
   made_.clear();
 }
 
-void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick) {
+void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick, double cover_power) {
   for (FacetRef& r : facet_refs_) forget(r);
   facet_refs_.assign(4 * dt_->cell_capacity(), {});
   for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
@@ -306,7 +314,7 @@ void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::functio
     for (int i = 0; i < 4; ++i) {
       const CellId other = dt_->neighbour(c, i);
       if (!dt_->is_infinite(other) && other < c) continue;
-      examine(Facet{c, i});
+      examine(Facet{c, i}, cover_power);
     }
   }
   touch_changed(touched);

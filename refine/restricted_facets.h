@@ -28,6 +28,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <queue>
 #include <span>
@@ -83,7 +84,15 @@ class RestrictedFacets {
   void exclude_vertices(std::span<const PointId> points);
   /// Examines every finite facet once (initialisation only). Appends every vertex of a
   /// restricted facet to `touched`. Calls `tick` (if any) every 2^16 cells, for a progress line.
-  void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {});
+  /// `cover_power`: a bound the caller has proven on the power distance from every point of the
+  /// domain to its power-nearest point of the triangulation (sample_cover_power). A point x of a
+  /// facet's dual edge has power distance P + |x - o|² >= P to the facet's vertices (o, P: the
+  /// facet's orthocentre and its power), and they are its nearest; so where P exceeds the bound
+  /// (by a 1% margin for rounding, in a triangle far from degenerate) the edge misses the domain
+  /// and is not queried: ~3 facets in 4 after the mesher's initial sample, the far side of the
+  /// volume's tetrahedra. +inf (the default): every facet is queried.
+  void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {},
+               double cover_power = std::numeric_limits<double>::infinity());
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
   /// merely recomputed, nor a new vertex without restricted facets: the caller checks that one.
@@ -143,19 +152,22 @@ class RestrictedFacets {
   /// both, and empties them.
   void touch_changed(std::vector<PointId>& touched);
   /// The line of points power-equidistant from t's vertices: t's orthocentre, t's unit normal,
-  /// and the power distance from the orthocentre to t's vertices. nullopt for a degenerate t.
+  /// the power distance from the orthocentre to t's vertices, and t's shape, |ab x ac|² /
+  /// (|ab|² |ac|²) (the squared sine of the angle at a). nullopt for a degenerate t.
   struct FacetLine {
     Vec3 orthocentre, normal;
-    double power;
+    double power, shape;
   };
   std::optional<FacetLine> facet_line(const std::array<PointId, 3>& t) const;
-  /// The dual edge of finite facet f, whose vertices are t (sorted), computed on t's line from
-  /// t's orthocentre (precondition: both cells finite). An end is not finite when a cell is flat.
-  delaunay::VoronoiEdge dual_on_facet_line(delaunay::Facet f, const std::array<PointId, 3>& t) const;
-  /// The same from the cells' orthocentres (dual()), projected on t's line: for flat cells.
-  delaunay::VoronoiEdge dual_projected(delaunay::Facet f, const std::array<PointId, 3>& t) const;
-  /// Examines finite facet f (its dual edge against the domain) and records it on both sides.
-  void examine(delaunay::Facet f);
+  /// The dual edge of finite facet f, computed on the line of its vertices (sorted) from their
+  /// orthocentre (precondition: both cells finite). An end is not finite when a cell is flat or
+  /// there is no line.
+  delaunay::VoronoiEdge dual_on_facet_line(delaunay::Facet f, const std::optional<FacetLine>& line) const;
+  /// The same from the cells' orthocentres (dual()), projected on the line: for flat cells.
+  delaunay::VoronoiEdge dual_projected(delaunay::Facet f, const std::optional<FacetLine>& line) const;
+  /// Examines finite facet f (its dual edge against the domain) and records it on both sides;
+  /// not when its power exceeds `cover_power` (see rebuild).
+  void examine(delaunay::Facet f, double cover_power = std::numeric_limits<double>::infinity());
   bool well_conditioned(delaunay::Facet f) const;
   /// worst()'s heap key of a bad record: badness in eighth octaves, then Morton order of x.
   double order_key(double badness, const Vec3& x) const;

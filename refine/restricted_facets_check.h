@@ -17,8 +17,12 @@
 namespace delpsc::refine {
 
 /// One line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
-/// against `domain` (at most `max_problems`); empty iff they agree. O(F) segment queries for F
-/// finite facets.
+/// against `domain` (at most `max_problems`); empty iff they agree, but for one kind of pair: one
+/// the scan finds at a point where another vertex is clearly power-nearer than the triangle's
+/// (relative 1e-6). Its dual edge, computed from nearly flat cells, runs where the true one does
+/// not, and `kept` may rightly lack it: RestrictedFacets::rebuild skips facets whose dual edge
+/// cannot meet the domain without querying them. O(F) segment queries for F finite facets, and
+/// O(V) per such pair.
 std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangulation& dt, const Domain& domain,
                                                  const RestrictedFacets& kept, std::size_t max_problems = 20);
 

@@ -122,13 +122,32 @@ TEST_CASE("select_separated_points: degenerate input") {
   CHECK(refine::select_separated_points(ring, big, {}, 0.5) == std::vector<std::uint32_t>{2});  // 4.41 - 4 > 0.25
 }
 
-TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice first, random points near edges") {
+TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice first, random points near edges, a net") {
   const refine::PolygonDomain domain(io::make_cube(1));  // unit cube, six patches, 12 triangles
   const double spacing = 0.05;
   std::vector<Vec3> points;
   std::vector<std::uint32_t> patches;
-  const std::size_t cover = domain.surface_candidates(spacing, 1u << 30, points, patches);
+  const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
+  const std::size_t cover = parts.lattice;
   REQUIRE(points.size() == patches.size());
+  // The net last: every point of the faces within its radius of a net point; each triangle's
+  // rows at most (√3/2) h apart cut into pieces <= h: ~1.15 / h² per unit area, plus the rows'
+  // ends, plus the 8 corners.
+  const double h = refine::kNetRadius * spacing;
+  CHECK(parts.net_radius == h);
+  CHECK(static_cast<double>(parts.net) > 6 / (h * h));
+  CHECK(static_cast<double>(parts.net) < 6 * 1.2 / (h * h) + 12 * 4 / h + 8);
+  REQUIRE(parts.net < points.size() - cover);
+  const std::vector<Vec3> net(points.end() - static_cast<std::ptrdiff_t>(parts.net), points.end());
+  std::mt19937 probe_rng(17);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < 3000; ++k) {
+    Vec3 p(unit(probe_rng), unit(probe_rng), unit(probe_rng));
+    p[k % 3] = (k / 3) % 2;  // on a face
+    double nearest = HUGE_VAL;
+    for (const Vec3& q : net) nearest = std::min(nearest, (q - p).norm());
+    CHECK(nearest <= h * (1 + 1e-12));
+  }
   // The lattice: area 6 at 2 / (√3 step²) per unit area.
   const double step = refine::kLatticeStep * spacing;
   const double lattice_expected = 6 * 2 / (std::sqrt(3.0) * step * step);
@@ -136,7 +155,7 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice fir
   // Random candidates at 4 per spacing², only within ~2.5 spacings of a face's border: their
   // count is the band's share of the area (~45%), well under the whole area's.
   const double random_everywhere = 6 * 4 / (spacing * spacing);
-  const std::size_t random = points.size() - cover;
+  const std::size_t random = points.size() - cover - parts.net;
   CHECK(static_cast<double>(random) > 0.35 * random_everywhere);
   CHECK(static_cast<double>(random) < 0.6 * random_everywhere);
   std::vector<std::size_t> per_patch(domain.patch_count(), 0);
@@ -146,7 +165,7 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice fir
     CHECK(nearest->squared_distance < 1e-28);
     REQUIRE(patches[i] < domain.patch_count());
     ++per_patch[patches[i]];
-    if (i < cover) continue;
+    if (i < cover || i >= points.size() - parts.net) continue;
     // A random candidate lies in the band: within 2.5 spacings of its face's border, give or take
     // a stratum (~1 spacing across). A face's two triangles are one cluster, with one lattice:
     // its diagonal gets none.
@@ -161,20 +180,24 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice fir
   // The same points on every call; nothing for a spacing that is not a length.
   std::vector<Vec3> again;
   std::vector<std::uint32_t> again_patches;
-  CHECK(domain.surface_candidates(spacing, 1u << 30, again, again_patches) == cover);
+  CHECK(domain.surface_candidates(spacing, 1u << 30, again, again_patches).lattice == cover);
   CHECK(again == points);
   std::vector<Vec3> none;
-  CHECK(domain.surface_candidates(0, 1u << 30, none, again_patches) == 0);
-  CHECK(domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches) == 0);
+  const auto nothing = [](const refine::CandidateParts& p) { return p.lattice == 0 && p.net == 0 && p.net_radius == 0; };
+  CHECK(nothing(domain.surface_candidates(0, 1u << 30, none, again_patches)));
+  CHECK(nothing(domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches)));
   CHECK(none.empty());
   // More than the budget: none at all (~9,600 random candidates are expected here). A budget
-  // that leaves too little for the lattice's work: random candidates alone, everywhere.
-  CHECK(domain.surface_candidates(spacing, 9000, none, again_patches) == 0);
+  // that leaves too little for the net (~1,300) and the lattice's work: random candidates
+  // alone, everywhere.
+  CHECK(nothing(domain.surface_candidates(spacing, 9000, none, again_patches)));
   CHECK(none.empty());
-  CHECK(domain.surface_candidates(spacing, 10000, none, again_patches) == 0);
+  CHECK(nothing(domain.surface_candidates(spacing, 10000, none, again_patches)));
   CHECK(none.size() > 9000);
   none.clear();
-  CHECK(domain.surface_candidates(spacing, 20000, none, again_patches) > 0);
+  const refine::CandidateParts enough = domain.surface_candidates(spacing, 20000, none, again_patches);
+  CHECK(enough.lattice > 0);
+  CHECK(enough.net == parts.net);
 }
 
 TEST_CASE("PolygonDomain::surface_candidates bounds the lattice's work by the budget") {
@@ -187,8 +210,12 @@ TEST_CASE("PolygonDomain::surface_candidates bounds the lattice's work by the bu
   const refine::PolygonDomain domain(protect::build_complex(soup));
   std::vector<Vec3> points;
   std::vector<std::uint32_t> patches;
-  CHECK(domain.surface_candidates(1.0, 1000000, points, patches) == 0);
+  const refine::CandidateParts parts = domain.surface_candidates(1.0, 1000000, points, patches);
+  CHECK(parts.lattice == 0);
   CHECK(!points.empty());
+  // Its net (~10^8 row pieces) does not fit either: left out, so no radius is promised.
+  CHECK(parts.net == 0);
+  CHECK(parts.net_radius == 0);
 }
 
 namespace {
@@ -205,11 +232,11 @@ std::size_t uncovered(const std::vector<Vec3>& probes, const std::vector<Vec3>& 
 struct Candidates {
   std::vector<Vec3> points;
   std::vector<std::uint32_t> patches;
-  std::size_t cover = 0;
+  refine::CandidateParts parts;
 };
 Candidates candidates_of(const refine::PolygonDomain& domain, double spacing) {
   Candidates c;
-  c.cover = domain.surface_candidates(spacing, 1u << 30, c.points, c.patches);
+  c.parts = domain.surface_candidates(spacing, 1u << 30, c.points, c.patches);
   return c;
 }
 
@@ -439,7 +466,8 @@ TEST_CASE("PolygonDomain::surface_candidates lays a lattice on clusters of small
   // a lattice, the clusters of nearly parallel ones do.
   const refine::PolygonDomain domain(io::make_sphere(24));
   const double spacing = 0.1;
-  const auto [points, patches, cover] = candidates_of(domain, spacing);
+  const auto [points, patches, parts] = candidates_of(domain, spacing);
+  const std::size_t cover = parts.lattice;
   CHECK(cover > points.size() / 20);
   for (const Vec3& p : points) {
     const auto nearest = domain.closest_point(p);
@@ -447,7 +475,7 @@ TEST_CASE("PolygonDomain::surface_candidates lays a lattice on clusters of small
     CHECK(nearest->squared_distance < 1e-24);
   }
   // The lattice is chosen first and most of the sample comes from it.
-  const auto chosen = refine::select_sample(points, cover, {}, {}, spacing);
+  const auto chosen = refine::select_sample(points, parts, {}, {}, spacing);
   check_selection(points, {}, {}, spacing, chosen, sample_spacings(points.size(), cover, spacing));
   const auto from_lattice = std::count_if(chosen.begin(), chosen.end(), [&](std::uint32_t i) { return i < cover; });
   CHECK(static_cast<std::size_t>(from_lattice) > chosen.size() / 2);
@@ -459,9 +487,10 @@ TEST_CASE("select_sample leaves no hole away from the edges of a cube's faces") 
   // the spacing of a chosen point: step 2(b) finds no restricted facet larger than the spacing.
   const refine::PolygonDomain domain(io::make_cube(4));
   const double spacing = 0.05;
-  const auto [points, patches, cover] = candidates_of(domain, spacing);
+  const auto [points, patches, parts] = candidates_of(domain, spacing);
+  const std::size_t cover = parts.lattice;
   const std::vector<Vec3> fixed{{0.5, 0.5, 0}};
-  const auto chosen = refine::select_sample(points, cover, {}, fixed, spacing);
+  const auto chosen = refine::select_sample(points, parts, {}, fixed, spacing);
   // The order: the lattice's points first; the random ones at the closer gap-filling spacing.
   check_selection(points, {}, fixed, spacing, chosen, sample_spacings(points.size(), cover, spacing));
   std::vector<Vec3> sample(fixed);
@@ -479,4 +508,70 @@ TEST_CASE("select_sample leaves no hole away from the edges of a cube's faces") 
   const auto first_random = std::find_if(chosen.begin(), chosen.end(), [&](std::uint32_t i) { return i >= cover; });
   CHECK(first_random != chosen.end());
   CHECK(std::all_of(first_random, chosen.end(), [&](std::uint32_t i) { return i >= cover; }));
+}
+
+TEST_CASE("select_sample decides the whole net, and the sample then reaches every patch point within sample_cover_power") {
+  // The unit cube with balls along its twelve edges (as protection puts them), radius 0.6
+  // spacing, one per spacing.
+  const refine::PolygonDomain domain(io::make_cube(2));
+  const double spacing = 0.05, radius = 0.6 * spacing;
+  std::vector<WeightedPoint> balls;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int corner = 0; corner < 4; ++corner)
+      for (double t = 0; t <= 1 + 1e-9; t += spacing) {
+        Vec3 c;
+        c[axis] = t;
+        c[(axis + 1) % 3] = corner & 1;
+        c[(axis + 2) % 3] = corner >> 1;
+        balls.push_back(WeightedPoint::from(c, radius * radius));
+      }
+  const auto [points, patches, parts] = candidates_of(domain, spacing);
+  REQUIRE(parts.net > 0);
+  bool decided = false;
+  const auto chosen = refine::select_sample(points, parts, balls, {}, spacing, {}, &decided);
+  CHECK(decided);
+  check_selection(points, balls, {}, spacing, chosen, sample_spacings(points.size(), parts.lattice, spacing));
+  std::vector<WeightedPoint> sample(balls);
+  for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
+  const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> unit(0, 1);
+  double worst = 0;
+  for (int k = 0; k < 20000; ++k) {
+    Vec3 p(unit(rng), unit(rng), unit(rng));
+    p[k % 3] = (k / 3) % 2;
+    double nearest = HUGE_VAL;
+    for (const WeightedPoint& w : sample) nearest = std::min(nearest, (w.point() - p).squaredNorm() - w.w);
+    worst = std::max(worst, nearest);
+  }
+  CHECK(worst <= bound);
+  // The sample reaches much closer than the proof's bound (2.7 spacings): what rebuild() gives up.
+  CHECK(worst < 0.5 * bound);
+
+  // Nothing decided: no net, or a net point skipped (its local spacing not valid).
+  refine::CandidateParts no_net = parts;
+  no_net.net = 0;
+  (void)refine::select_sample(points, no_net, balls, {}, spacing, {}, &decided);
+  CHECK_FALSE(decided);
+  std::vector<double> local(points.size(), spacing);
+  local.back() = 0;
+  (void)refine::select_sample(points, parts, balls, {}, spacing, local, &decided);
+  CHECK_FALSE(decided);
+  local.back() = spacing;
+  (void)refine::select_sample(points, parts, balls, {}, spacing, local, &decided);
+  CHECK(decided);
+}
+
+TEST_CASE("sample_cover_power: attained by a net point just refused by the largest ball") {
+  // A net point q just outside the reach of ball B(0, r) at spacing s (power distance s²), and a
+  // patch point y a net radius h beyond it: nothing nearer than B, at power distance the bound.
+  for (const auto& [s, h, r] : {std::array<double, 3>{1, 1.5, 1}, {0.3, 0.2, 0}, {2, 0.5, 3}}) {
+    const Vec3 q(std::sqrt(s * s + r * r), 0, 0), y = q + Vec3(h, 0, 0);
+    const WeightedPoint ball = WeightedPoint::from(Vec3::Zero(), r * r);
+    const double power = y.squaredNorm() - ball.w;
+    CHECK(refine::sample_cover_power(s, h, r) == doctest::Approx(power));
+    // A point chosen at q or refusing q from s away reaches y closer.
+    CHECK(h * h <= power);
+    CHECK((s + h) * (s + h) <= power + 1e-12);
+  }
 }

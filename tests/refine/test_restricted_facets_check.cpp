@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <delpsc/io/shapes.h>
+#include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/restricted_facets.h>
 #include <delpsc/refine/restricted_facets_check.h>
@@ -114,4 +115,46 @@ TEST_CASE("excluded frame points: no facet through them is examined, and the rec
   // A stray id is refused, not taken as a table size.
   const std::vector<delaunay::PointId> stray{delaunay::kNoPoint};
   CHECK_THROWS_AS(wrong.exclude_vertices(stray), std::invalid_argument);
+}
+
+TEST_CASE("rebuild with the initial sample's proven cover skips most queries and loses no restricted facet") {
+  // The mesher's start without balls: the frame, then the sample chosen from the candidates
+  // (lattice, random points, net), whose reach sample_cover_power proves.
+  for (const int model : {0, 1}) {
+    const refine::PolygonDomain domain(model == 0 ? io::make_cube(2) : io::make_sphere(12));
+    CAPTURE(model);
+    const double spacing = 0.08;
+    std::vector<Vec3> points;
+    std::vector<std::uint32_t> patches;
+    const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
+    bool decided = false;
+    const auto chosen = refine::select_sample(points, parts, {}, {}, spacing, {}, &decided);
+    REQUIRE(decided);
+    delaunay::RegularTriangulation dt;
+    const std::vector<delaunay::PointId> frame = insert_frame(dt);
+    std::vector<WeightedPoint> sample;
+    for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
+    dt.insert(sample);
+    const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, 0);
+    refine::RestrictedFacets culled(dt, domain), all(dt, domain);
+    culled.exclude_vertices(frame);
+    all.exclude_vertices(frame);
+    std::vector<delaunay::PointId> touched;
+    culled.rebuild(touched, {}, bound);
+    all.rebuild(touched);
+    REQUIRE(all.size() > 0);
+    CHECK(culled.size() == all.size());
+    CHECK(culled.queries() * 5 < all.queries() * 4);  // ~27% fewer on these small models, ~75% on the CGAL demo models
+    for (const auto& p : refine::check_restricted_facets(dt, domain, culled)) FAIL_CHECK(p);
+    // The records stay right as points are added (carried-over outcomes included).
+    std::mt19937_64 rng(7);
+    if (model == 0) insert_and_follow(dt, domain, culled, rng, 100, 0);
+    for (const auto& p : refine::check_restricted_facets(dt, domain, culled)) FAIL_CHECK(p);
+
+    // A bound below what the sample reaches drops restricted facets, and the check sees it.
+    refine::RestrictedFacets wrong(dt, domain);
+    wrong.exclude_vertices(frame);
+    wrong.rebuild(touched, {}, 0.3 * spacing * spacing);
+    CHECK_FALSE(refine::check_restricted_facets(dt, domain, wrong).empty());
+  }
 }
