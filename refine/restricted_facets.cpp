@@ -165,11 +165,22 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   // V_t lies in the power cell of an excluded vertex, which misses the domain: no record, and an
   // outcome update() may carry over (it stays true however the cells change).
   if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;
-  const std::optional<FacetLine> line = facet_line(v);
   // Beyond the proven cover (rebuild): V_t misses the domain, whatever the cells (the bound is
-  // on t's own line), so the outcome may be carried over as a queried one's. The shape test
-  // keeps P's rounding far below the margin: t's angle at a is above 0.06°.
+  // on t's own line), so the outcome may be carried over as a queried one's. First without the
+  // orthocentre: it lies on the radical plane of every two of t's vertices, so P is at least the
+  // least power distance on that plane (most culled facets have an edge that long). Then P
+  // itself, where the shape test keeps its rounding far below the margin (t's angle at a above
+  // 0.06°).
   constexpr double kCoverMargin = 1.01, kShapeFloor = 1e-6;
+  if (cover_power < HUGE_VAL) {
+    const WeightedPoint &a = dt_->point(v[0]), &b = dt_->point(v[1]), &c = dt_->point(v[2]);
+    const auto least_power = [](const WeightedPoint& x, const WeightedPoint& y) {
+      const double d2 = (x.point() - y.point()).squaredNorm(), m = d2 + x.w - y.w;
+      return d2 > 0 ? m * m / (4 * d2) - x.w : -HUGE_VAL;  // two vertices never coincide
+    };
+    if (std::max({least_power(a, b), least_power(a, c), least_power(b, c)}) > kCoverMargin * cover_power) return;
+  }
+  const std::optional<FacetLine> line = facet_line(v);
   if (line && line->power > kCoverMargin * cover_power && line->shape > kShapeFloor) return;
   // Computed first: it decides how to compute the dual edge and whether update() may carry the
   // outcome over (false for a hull facet, whose dual is a ray).
