@@ -195,11 +195,32 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
     ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
     return;
   }
-  ++queries_;
-  if (e.is_ray)
-    domain_->intersect_ray(e.source, e.direction, hits_);
-  else
-    domain_->intersect_segment(e.source, e.target, hits_);
+  // With a proven cover, a point of V_t on the domain is within sqrt(bound - P) of t's
+  // orthocentre along the line (its power there is P + s²): only that window of the edge is
+  // queried, and nothing when the edge misses it. The dual edges of big cells run deep into the
+  // volume: the window is their surface end.
+  const bool clip = cover_power < HUGE_VAL && line && line->shape > kShapeFloor;
+  if (clip) {
+    const double reach = std::sqrt(kCoverMargin * cover_power - line->power);
+    const Vec3 &o = line->orthocentre, &n = line->normal;
+    const double s0 = (e.source - o).dot(n);
+    double lo = s0, hi = s0;
+    if (e.is_ray)
+      (e.direction.dot(n) >= 0 ? hi : lo) = e.direction.dot(n) >= 0 ? HUGE_VAL : -HUGE_VAL;
+    else
+      (e.target - o).dot(n) < s0 ? lo = (e.target - o).dot(n) : hi = (e.target - o).dot(n);
+    lo = std::max(lo, -reach);
+    hi = std::min(hi, reach);
+    if (!(lo <= hi)) return;
+    ++queries_;
+    domain_->intersect_segment(o + lo * n, o + hi * n, hits_);
+  } else {
+    ++queries_;
+    if (e.is_ray)
+      domain_->intersect_ray(e.source, e.direction, hits_);
+    else
+      domain_->intersect_segment(e.source, e.target, hits_);
+  }
   if (hits_.empty()) {
     if (!conditioned) {  // update() must not carry this outcome over
       const Facet m = dt_->mirror_facet(f);
