@@ -26,7 +26,9 @@ struct RowLayout {
     a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
     // Not finite (a NaN or infinite coordinate, or h): nothing, rather than a count cast from NaN.
     if (!a0.allFinite() || !b0.allFinite() || !c0.allFinite() || !(h > 0) || !std::isfinite(h)) return;
-    if (!(longest > 0)) return;
+    // No edge longer than h: one row (the height is at most (sqrt(3) / 2) h) of one piece, whose
+    // ends are corners - nothing, found without a square root (most triangles of a fine input).
+    if (!(longest > 0) || longest <= h * h) return;
     // Height of c over ab, through the area: |ab x ac| / |ab|.
     const double height = (b - a).cross(c - a).norm() / std::sqrt(longest);
     rows = sample_pieces(height, std::sqrt(3.0) / 2 * h);
