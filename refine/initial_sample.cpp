@@ -172,17 +172,27 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const double part_spacing = parts[k].scale * spacing;
     std::size_t own = 0;                   // the cell's own slot
-    std::array<std::uint32_t, 27> heads{};  // heads[0]: the cell's own chain, tested first
-    std::size_t occupied = 0;              // heads[1 .. occupied): its neighbours with points
+    std::array<std::uint32_t, 26> heads{};  // its neighbours' chains with points...
+    std::size_t occupied = 0;              // ...heads[0 .. occupied)
+    bool neighbours_found = false;         // ...once a candidate of the cell needs them
     std::uint64_t current = 0;
     for (std::size_t j = 0; j < keyed[k].size(); ++j) {
       const auto [key, i] = keyed[k][j];
+      const Vec3& x = candidates[i];
       if (j == 0 || key != current) {
-        // The neighbours' chains, once per cell: only this cell gains points until the next one.
         current = key;
-        const auto c = grid.cell_of(candidates[i]);
         own = grid.slot_of(key);
-        occupied = 1;
+        neighbours_found = false;
+      }
+      const double s = local ? parts[k].scale * local_spacing[i] : part_spacing;
+      // The cell's own chain first: most refusals are there (a net point's refuser, often), and
+      // they then cost no lookup of the 26 neighbours.
+      if (grid.chain_within(grid.head(own), x, s * s)) continue;
+      if (!neighbours_found) {
+        // Once per cell: only this cell gains points until the next one.
+        neighbours_found = true;
+        const auto c = grid.cell_of(x);
+        occupied = 0;
         for (std::int64_t dx = -1; dx <= 1; ++dx)
           for (std::int64_t dy = -1; dy <= 1; ++dy)
             for (std::int64_t dz = -1; dz <= 1; ++dz) {
@@ -191,9 +201,6 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
               if (head != PointGrid::kEmpty) heads[occupied++] = head;
             }
       }
-      heads[0] = grid.head(own);
-      const Vec3& x = candidates[i];
-      const double s = local ? parts[k].scale * local_spacing[i] : part_spacing;
       if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
                       [&](std::uint32_t head) { return grid.chain_within(head, x, s * s); }))
         continue;
