@@ -125,6 +125,8 @@ void Mesher::initialise() {
   touched_.clear();
   // The sample's proven cover spares most of the first examination's queries (rebuild).
   facets_.rebuild(touched_, tick, sample_cover_power_);
+  stats_.cover_skipped = facets_.skipped();
+  stats_.first_queries = facets_.queries();
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
   refinements_at_full_check_ = stats_.ball_refinements;
 }

@@ -115,6 +115,9 @@ struct MesherStats {
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
   std::size_t seeds = 0;
   std::size_t sampled = 0;              ///< points of the initial sample
+  /// Facets of the first examination the sample's proven cover spared a dual-edge query
+  /// (RestrictedFacets::rebuild), and those queried; 0 skipped without a sample or its net.
+  std::size_t cover_skipped = 0, first_queries = 0;
   std::size_t full_sweeps = 0;          ///< closing full re-checks (initialise's first one not
                                         ///< counted; one only after a RefineBall since the last)
   bool stopped_at_max_vertices = false;

@@ -178,10 +178,16 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
       const double d2 = (x.point() - y.point()).squaredNorm(), m = d2 + x.w - y.w;
       return d2 > 0 ? m * m / (4 * d2) - x.w : -HUGE_VAL;  // two vertices never coincide
     };
-    if (std::max({least_power(a, b), least_power(a, c), least_power(b, c)}) > kCoverMargin * cover_power) return;
+    if (std::max({least_power(a, b), least_power(a, c), least_power(b, c)}) > kCoverMargin * cover_power) {
+      ++skipped_;
+      return;
+    }
   }
   const std::optional<FacetLine> line = facet_line(v);
-  if (line && line->power > kCoverMargin * cover_power && line->shape > kShapeFloor) return;
+  if (line && line->power > kCoverMargin * cover_power && line->shape > kShapeFloor) {
+    ++skipped_;
+    return;
+  }
   // Computed first: it decides how to compute the dual edge and whether update() may carry the
   // outcome over (false for a hull facet, whose dual is a ray).
   const bool conditioned = well_conditioned(f);
@@ -211,7 +217,10 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
       (e.target - o).dot(n) < s0 ? lo = (e.target - o).dot(n) : hi = (e.target - o).dot(n);
     lo = std::max(lo, -reach);
     hi = std::min(hi, reach);
-    if (!(lo <= hi)) return;
+    if (!(lo <= hi)) {
+      ++skipped_;
+      return;
+    }
     ++queries_;
     domain_->intersect_segment(o + lo * n, o + hi * n, hits_);
   } else {

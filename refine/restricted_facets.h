@@ -106,6 +106,9 @@ class RestrictedFacets {
   /// Dual edges queried against the domain so far (segments and rays): the cost that
   /// carry-over and exclude_vertices save.
   std::size_t queries() const { return queries_; }
+  /// Facets rebuild() spared a query because of `cover_power` (their dual edge or its window
+  /// misses the domain).
+  std::size_t skipped() const { return skipped_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
   /// The live records incident to vertex v, all patches.
   std::span<const Incidence> incident(PointId v) const {
@@ -195,6 +198,7 @@ class RestrictedFacets {
   std::vector<SurfaceHit> hits_;               // scratch
   std::vector<char> excluded_;                 // by PointId: exclude_vertices()
   std::size_t queries_ = 0;
+  std::size_t skipped_ = 0;
   std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;

@@ -77,6 +77,17 @@ TEST_CASE("cube") {
   mesh_model(io::make_cube(4), 0.04);
 }
 
+TEST_CASE("the initial sample's proven cover spares first queries, and only with the sample") {
+  // run_mesher_and_check compares the restricted facets with a fresh scan: nothing skipped was
+  // restricted. The box with a fin at 2%: its volume's tetrahedra are most of the facets.
+  const Outcome with = mesh_model(io::make_box_with_fin(4), 0.02);
+  MESSAGE("skipped=" << with.stats.cover_skipped << " queried=" << with.stats.first_queries);
+  CHECK(with.stats.cover_skipped > with.stats.first_queries / 2);
+  const Outcome without = mesh_model(io::make_box_with_fin(4), 0.04, {.initial_sample = false});
+  CHECK(without.stats.cover_skipped == 0);
+  CHECK(without.stats.first_queries > 0);
+}
+
 TEST_CASE("open square sheet") { mesh_model(io::make_square_sheet(4), 0.04); }
 
 TEST_CASE("capped cylinder") { mesh_model(io::make_capped_cylinder(1, 2, 24, 8, 4), 0.04); }
