@@ -109,7 +109,8 @@ class Domain {
   /// Appends candidate points for the mesher's initial sample (initial_sample.h) to `points`,
   /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and
   /// spread evenly over it (the mesher keeps ~1 in 6; a gap is no error, refinement fills it);
-  /// the same points on every call. None at all when they would be more than `budget`. Returns
+  /// the same points on every call. None at all when the cover and the random points would be
+  /// more than `budget`; the net alone is left out when it does not fit in what they leave. Returns
   /// the parts they form (CandidateParts): a cover to be chosen from first, and a net to be
   /// chosen from last whose radius the mesher may rely on (a promise: every point of every patch
   /// within net_radius of a net point). The default appends none: the mesher then starts from

@@ -80,7 +80,7 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
                                          double spacing, std::span<const double> local_spacing = {},
                                          bool* net_decided = nullptr);
 
-/// The largest power distance from a point of the patches to the nearest of the balls, the fixed
+/// A bound on the power distance from any point of the patches to the nearest of the balls, the fixed
 /// points and the points chosen (all of them, or the triangulation's vertices that hide the
 /// rest) when select_sample decided a net of radius `net_radius` at `spacing` (the net's own,
 /// kGapFillSpacing × select_sample's): a patch point y is within h of a net point q, and q was

@@ -156,8 +156,7 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
   double net_expected = static_cast<double>(complex_.vertices.size());
   for (const auto& tri : complex_.triangles)
     net_expected += triangle_sample_count(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius);
-  const bool net_fits = total + net_expected <= static_cast<double>(budget);
-  if (net_fits) total += net_expected;
+  if (total + net_expected <= static_cast<double>(budget)) total += net_expected;  // the lattice leaves it room
 
   // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
   // lattice point each: random candidates serve them as well), first: the mesher chooses from it
@@ -251,9 +250,16 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
           uniform_in(u + step_uv, v, u, v + step_uv, u + step_uv, v + step_uv);
       }
   }
+  // The stratified counts may pass their expectation: the promise is none at all then.
+  if (points.size() - start > budget) {
+    points.resize(start);
+    patches.resize(start);
+    return {};
+  }
   CandidateParts parts;
   parts.lattice = lattice;
-  if (net_fits) {
+  // The net when it fits in what the lattice and the random points left (counted, not made).
+  if (static_cast<double>(points.size() - start) + net_expected <= static_cast<double>(budget)) {
     const std::size_t net_start = points.size();
     std::vector<std::uint8_t> corner_done(complex_.vertices.size(), 0);
     for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
@@ -268,12 +274,6 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
     }
     parts.net = points.size() - net_start;
     parts.net_radius = net_radius;
-  }
-  // The stratified counts may pass their expectation: the promise is none at all then.
-  if (points.size() - start > budget) {
-    points.resize(start);
-    patches.resize(start);
-    return {};
   }
   return parts;
 }

@@ -166,7 +166,8 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   // outcome update() may carry over (it stays true however the cells change).
   if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;
   // Beyond the proven cover (rebuild): V_t misses the domain, whatever the cells (the bound is
-  // on t's own line), so the outcome may be carried over as a queried one's. First without the
+  // on t's own line, an exact statement about t alone), so the outcome may be carried over as a
+  // queried one's. First without the
   // orthocentre: it lies on the radical plane of every two of t's vertices, so P is at least the
   // least power distance on that plane (most culled facets have an edge that long). Then P
   // itself, where the shape test keeps its rounding far below the margin (t's angle at a above
@@ -204,7 +205,9 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   // With a proven cover, a point of V_t on the domain is within sqrt(bound - P) of t's
   // orthocentre along the line (its power there is P + s²): only that window of the edge is
   // queried, and nothing when the edge misses it. The dual edges of big cells run deep into the
-  // volume: the window is their surface end.
+  // volume: the window is their surface end. Unlike the skips above, this one depends on the
+  // computed edge, so an empty window counts as a query without hits: not trusted when the
+  // edge came from nearly flat cells (below).
   const bool clip = cover_power < HUGE_VAL && line && line->shape > kShapeFloor;
   if (clip) {
     const double reach = std::sqrt(kCoverMargin * cover_power - line->power);
@@ -217,12 +220,13 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
       (e.target - o).dot(n) < s0 ? lo = (e.target - o).dot(n) : hi = (e.target - o).dot(n);
     lo = std::max(lo, -reach);
     hi = std::min(hi, reach);
-    if (!(lo <= hi)) {
+    if (lo <= hi) {
+      ++queries_;
+      domain_->intersect_segment(o + lo * n, o + hi * n, hits_);
+    } else {
       ++skipped_;
-      return;
+      hits_.clear();
     }
-    ++queries_;
-    domain_->intersect_segment(o + lo * n, o + hi * n, hits_);
   } else {
     ++queries_;
     if (e.is_ray)

@@ -90,7 +90,9 @@ class RestrictedFacets {
   /// facet's orthocentre and its power), and they are its nearest; so where P exceeds the bound
   /// (by a 1% margin for rounding, in a triangle far from degenerate) the edge misses the domain
   /// and is not queried: ~3 facets in 4 after the mesher's initial sample, the far side of the
-  /// volume's tetrahedra. +inf (the default): every facet is queried.
+  /// volume's tetrahedra. Of the others only the window |s| <= sqrt(bound - P) around the
+  /// orthocentre is queried (nothing when the computed edge misses it). +inf (the default):
+  /// every facet's whole dual edge is queried.
   void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {},
                double cover_power = std::numeric_limits<double>::infinity());
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+
+#include <delpsc/kernel/constructions.h>
 
 namespace delpsc::refine {
 
@@ -19,20 +22,52 @@ std::vector<Pair> pairs_of(const RestrictedFacets& facets) {
   return out;
 }
 
-// Whether the scan's record puts its point where another vertex is clearly power-nearer than the
-// triangle's: the dual edge the scan computed (from nearly flat cells, see
-// RestrictedFacets::dual_projected) runs where the true one does not. Brute force over the
-// vertices: it runs only for the pairs the two sides disagree on.
-bool off_its_voronoi_edge(const delaunay::RegularTriangulation& dt, const RestrictedFacet& r, double scale2) {
-  const auto power = [&](PointId v) {
+// Whether (t, patch) is not restricted after all: t's exact dual edge, found on t's line from
+// every vertex rather than from t's two cells (each vertex v keeps the part where t's vertices
+// are not power-farther than v: one linear condition in the offset s, since both powers grow
+// as s²), misses the patch. A fresh scan computes the edge from the cells, and from nearly flat
+// cells it can run where the true one does not. Doubtful cases (no orthocentre, an edge that the
+// rounding of its ends could reach the patch with) count as restricted. O(V).
+bool truly_misses(const delaunay::RegularTriangulation& dt, const Domain& domain, const RestrictedFacet& r,
+                  double scale) {
+  const WeightedPoint &a = dt.point(r.vertices[0]), &b = dt.point(r.vertices[1]), &c = dt.point(r.vertices[2]);
+  const auto centre = kernel::orthocentre(a, b, c);
+  const Vec3 n = (b.point() - a.point()).cross(c.point() - a.point()).normalized();
+  if (!centre || !n.allFinite()) return false;
+  const Vec3 o = centre->point();
+  const double power = (o - a.point()).squaredNorm() - a.w;
+  double lo = -HUGE_VAL, hi = HUGE_VAL;
+  for (PointId v = 0; v < dt.number_of_points(); ++v) {
+    if (dt.status(v) != delaunay::PointStatus::vertex || v == r.vertices[0] || v == r.vertices[1] ||
+        v == r.vertices[2])
+      continue;
+    // π(o + s n, v) - π(o + s n, t) = (π(o, v) - P) + 2 s n.(o - v) must not be negative.
     const WeightedPoint& w = dt.point(v);
-    return (r.point - w.point()).squaredNorm() - w.w;
-  };
-  const double own = std::min({power(r.vertices[0]), power(r.vertices[1]), power(r.vertices[2])});
-  const double tolerance = 1e-6 * std::abs(own) + 1e-12 * scale2;
-  for (PointId v = 0; v < dt.number_of_points(); ++v)
-    if (dt.status(v) == delaunay::PointStatus::vertex && power(v) < own - tolerance) return true;
-  return false;
+    const double c0 = (o - w.point()).squaredNorm() - w.w - power, c1 = 2 * n.dot(o - w.point());
+    if (c1 > 0)
+      lo = std::max(lo, -c0 / c1);
+    else if (c1 < 0)
+      hi = std::min(hi, -c0 / c1);
+    else if (c0 < 0)
+      return true;
+  }
+  const double slack = 1e-9 * scale;
+  lo -= slack;
+  hi += slack;
+  if (!(lo <= hi)) return true;
+  std::vector<SurfaceHit> hits;
+  if (std::isfinite(lo) && std::isfinite(hi)) {
+    domain.intersect_segment(o + lo * n, o + hi * n, hits);
+  } else if (std::isfinite(lo) || std::isfinite(hi)) {
+    const double end = std::isfinite(lo) ? lo : hi;
+    domain.intersect_ray(o + end * n, std::isfinite(lo) ? n : Vec3(-n), hits);
+  } else {
+    std::vector<SurfaceHit> other;
+    domain.intersect_ray(o, n, hits);
+    domain.intersect_ray(o, -n, other);
+    hits.insert(hits.end(), other.begin(), other.end());
+  }
+  return std::none_of(hits.begin(), hits.end(), [&](const SurfaceHit& h) { return h.patch == r.patch; });
 }
 
 std::string describe(const Pair& p, const char* where) {
@@ -57,11 +92,11 @@ std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangul
   std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only));
   if (only.empty()) return problems;
   const kernel::Box3 box = domain.bounding_box();
-  const double scale2 = (box.hi - box.lo).squaredNorm();
+  const double scale = (box.hi - box.lo).norm();
   fresh.for_each([&](std::uint32_t, const RestrictedFacet& r) {
     const Pair p{r.vertices[0], r.vertices[1], r.vertices[2], r.patch};
     if (problems.size() < max_problems && std::binary_search(only.begin(), only.end(), p) &&
-        !off_its_voronoi_edge(dt, r, scale2))
+        !truly_misses(dt, domain, r, scale))
       problems.push_back(describe(p, "is found by a fresh scan but not kept"));
   });
   return problems;

@@ -18,11 +18,11 @@ namespace delpsc::refine {
 
 /// One line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
 /// against `domain` (at most `max_problems`); empty iff they agree, but for one kind of pair: one
-/// the scan finds at a point where another vertex is clearly power-nearer than the triangle's
-/// (relative 1e-6). Its dual edge, computed from nearly flat cells, runs where the true one does
-/// not, and `kept` may rightly lack it: RestrictedFacets::rebuild skips facets whose dual edge
-/// cannot meet the domain without querying them. O(F) segment queries for F finite facets, and
-/// O(V) per such pair.
+/// the scan finds whose exact dual edge - on the triangle's line, from every vertex, not from its
+/// two cells - misses the patch. The scan's edge, computed from nearly flat cells, can run where
+/// the true one does not, and `kept` may rightly lack such a pair: RestrictedFacets::rebuild
+/// skips facets whose dual edge cannot meet the domain without querying them. O(F) segment
+/// queries for F finite facets, and O(V) per such pair.
 std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangulation& dt, const Domain& domain,
                                                  const RestrictedFacets& kept, std::size_t max_problems = 20);
 

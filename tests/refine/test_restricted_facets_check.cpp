@@ -118,24 +118,35 @@ TEST_CASE("excluded frame points: no facet through them is examined, and the rec
 }
 
 TEST_CASE("rebuild with the initial sample's proven cover skips most queries and loses no restricted facet") {
-  // The mesher's start without balls: the frame, then the sample chosen from the candidates
-  // (lattice, random points, net), whose reach sample_cover_power proves.
-  for (const int model : {0, 1}) {
-    const refine::PolygonDomain domain(model == 0 ? io::make_cube(2) : io::make_sphere(12));
+  // The mesher's start: the frame, balls (on the cube's edges, model 2), then the sample chosen
+  // from the candidates (lattice, random points, net), whose reach sample_cover_power proves.
+  for (const int model : {0, 1, 2}) {
+    const refine::PolygonDomain domain(model == 1 ? io::make_sphere(12) : io::make_cube(2));
     CAPTURE(model);
-    const double spacing = 0.08;
+    const double spacing = 0.08, radius = model == 2 ? 0.6 * spacing : 0;
+    std::vector<WeightedPoint> balls;
+    if (model == 2)
+      for (int axis = 0; axis < 3; ++axis)
+        for (int corner = 0; corner < 4; ++corner)
+          for (double t = 0; t <= 1 + 1e-9; t += spacing) {
+            Vec3 c;
+            c[axis] = t;
+            c[(axis + 1) % 3] = corner & 1;
+            c[(axis + 2) % 3] = corner >> 1;
+            balls.push_back(WeightedPoint::from(c, radius * radius));
+          }
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
     const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
     bool decided = false;
-    const auto chosen = refine::select_sample(points, parts, {}, {}, spacing, {}, &decided);
+    const auto chosen = refine::select_sample(points, parts, balls, {}, spacing, {}, &decided);
     REQUIRE(decided);
     delaunay::RegularTriangulation dt;
     const std::vector<delaunay::PointId> frame = insert_frame(dt);
-    std::vector<WeightedPoint> sample;
+    std::vector<WeightedPoint> sample(balls);
     for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
     dt.insert(sample);
-    const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, 0);
+    const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
     refine::RestrictedFacets culled(dt, domain), all(dt, domain);
     culled.exclude_vertices(frame);
     all.exclude_vertices(frame);
