@@ -14,6 +14,8 @@
 #include <delpsc/refine/surface_lattice.h>
 #include <delpsc/refine/triangle_clusters.h>
 
+#include "support/generators.h"
+
 using namespace delpsc;
 
 namespace {
@@ -515,16 +517,7 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
   // spacing, one per spacing.
   const refine::PolygonDomain domain(io::make_cube(2));
   const double spacing = 0.05, radius = 0.6 * spacing;
-  std::vector<WeightedPoint> balls;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int corner = 0; corner < 4; ++corner)
-      for (double t = 0; t <= 1 + 1e-9; t += spacing) {
-        Vec3 c;
-        c[axis] = t;
-        c[(axis + 1) % 3] = corner & 1;
-        c[(axis + 2) % 3] = corner >> 1;
-        balls.push_back(WeightedPoint::from(c, radius * radius));
-      }
+  const std::vector<WeightedPoint> balls = test::unit_cube_edge_balls(spacing, radius);
   const auto [points, patches, parts] = candidates_of(domain, spacing);
   REQUIRE(parts.net > 0);
   bool decided = false;

@@ -13,6 +13,8 @@
 #include <delpsc/refine/restricted_facets.h>
 #include <delpsc/refine/restricted_facets_check.h>
 
+#include "support/generators.h"
+
 using namespace delpsc;
 
 namespace {
@@ -124,17 +126,8 @@ TEST_CASE("rebuild with the initial sample's proven cover skips most queries and
     const refine::PolygonDomain domain(model == 1 ? io::make_sphere(12) : io::make_cube(2));
     CAPTURE(model);
     const double spacing = 0.08, radius = model == 2 ? 0.6 * spacing : 0;
-    std::vector<WeightedPoint> balls;
-    if (model == 2)
-      for (int axis = 0; axis < 3; ++axis)
-        for (int corner = 0; corner < 4; ++corner)
-          for (double t = 0; t <= 1 + 1e-9; t += spacing) {
-            Vec3 c;
-            c[axis] = t;
-            c[(axis + 1) % 3] = corner & 1;
-            c[(axis + 2) % 3] = corner >> 1;
-            balls.push_back(WeightedPoint::from(c, radius * radius));
-          }
+    const std::vector<WeightedPoint> balls =
+        model == 2 ? test::unit_cube_edge_balls(spacing, radius) : std::vector<WeightedPoint>{};
     std::vector<Vec3> points;
     std::vector<std::uint32_t> patches;
     const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);

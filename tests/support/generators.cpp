@@ -298,4 +298,18 @@ bool translate_exactly(std::vector<WeightedPoint>& points, const WeightedPoint& 
   return true;
 }
 
+std::vector<WeightedPoint> unit_cube_edge_balls(double spacing, double radius) {
+  std::vector<WeightedPoint> balls;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int corner = 0; corner < 4; ++corner)
+      for (double t = 0; t <= 1 + 1e-9; t += spacing) {
+        Vec3 c;
+        c[axis] = t;
+        c[(axis + 1) % 3] = corner & 1;
+        c[(axis + 2) % 3] = corner >> 1;
+        balls.push_back(WeightedPoint::from(c, radius * radius));
+      }
+  return balls;
+}
+
 }  // namespace delpsc::test

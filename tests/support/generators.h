@@ -107,6 +107,10 @@ WeightedPoint random_integer_vector(Rng& rng, std::int64_t bound);
 std::vector<WeightedPoint> sample_distinct(Rng& rng, const std::vector<WeightedPoint>& pool,
                                            std::size_t k);
 
+/// Balls along the twelve edges of the unit cube [0, 1]³, as protection puts them: of radius
+/// `radius` (weight radius²), one every `spacing` from each edge's start (`spacing` > 0).
+std::vector<WeightedPoint> unit_cube_edge_balls(double spacing, double radius);
+
 // ---- weights --------------------------------------------------------------------------------
 
 /// |p - center|^2 - r2 when every step of its evaluation in doubles is exact (checked with
