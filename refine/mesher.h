@@ -50,7 +50,7 @@
 // the domain can be from the sample (sample_cover_power, 2.66 λ with balls of radius λ). The
 // first examination of the facets then skips every facet whose orthocentre's power exceeds that
 // (RestrictedFacets::rebuild): its dual edge cannot meet the domain. That is ~3 facets in 4 of
-// the batch's triangulation at 0.5% (the volume's tetrahedra; 40-55% at 2%), and with the rest
+// the batch's triangulation at 0.5% (the volume's tetrahedra; 39-58% at ~2%), and with the rest
 // of the first examination queried only near the surface, meshing at 0.5% is ~8-22% faster.
 // And 8 unweighted frame points
 // far outside the bounding box (3 diagonals away), which make the triangulation 3-dimensional
