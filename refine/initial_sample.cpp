@@ -107,10 +107,6 @@ class PointGrid {
   std::vector<std::uint32_t> next_;
 };
 
-}  // namespace
-
-namespace {
-
 // Consecutive candidates [from, from + count) tested at scale × spacing (× their local spacing).
 struct SelectionPart {
   std::size_t from = 0, count = 0;

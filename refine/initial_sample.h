@@ -4,7 +4,10 @@
 // kGapFillSpacing λ (0.9 λ) for the random points that fill its gaps - so each lies outside every
 // ball and the sample is a finite, well-spread set. Inserting it in one sorted batch instead of
 // one point at a time, each with a restricted-facet update and a disk check, is the point: step 2
-// of Mesh2Complex (Dey & Levine 2009, §3) then starts close to its end.
+// of Mesh2Complex (Dey & Levine 2009, §3) then starts close to its end. The candidates end with
+// a net of every patch, chosen from last: once every net point is decided, the sample provably
+// reaches every point of the domain (sample_cover_power), which spares most of the first
+// examination's dual-edge queries (RestrictedFacets::rebuild).
 //
 // Units: lengths of the coordinates; spacing > 0. Cost: O(n) expected for n candidates plus a
 // sort of the candidates by grid cell; memory O(n).

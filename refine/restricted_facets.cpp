@@ -167,11 +167,10 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;
   // Beyond the proven cover (rebuild): V_t misses the domain, whatever the cells (the bound is
   // on t's own line, an exact statement about t alone), so the outcome may be carried over as a
-  // queried one's. First without the
-  // orthocentre: it lies on the radical plane of every two of t's vertices, so P is at least the
-  // least power distance on that plane (most culled facets have an edge that long). Then P
-  // itself, where the shape test keeps its rounding far below the margin (t's angle at a above
-  // 0.06°).
+  // queried one's. First without the orthocentre: it lies on the radical plane of every two of
+  // t's vertices, so P is at least the least power distance on that plane (most culled facets
+  // have an edge that long). Then P itself, where the shape test keeps its rounding far below
+  // the margin (t's angle at a above 0.06°).
   constexpr double kCoverMargin = 1.01, kShapeFloor = 1e-6;
   if (cover_power < HUGE_VAL) {
     const WeightedPoint &a = dt_->point(v[0]), &b = dt_->point(v[1]), &c = dt_->point(v[2]);
