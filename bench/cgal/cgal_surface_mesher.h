@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -44,8 +45,10 @@ struct CgalSurfaceMesh {
 };
 
 /// Reads the OFF model at `path` and meshes it with CGAL Mesh_3 at size `h` (absolute).
-/// Throws std::runtime_error when CGAL cannot read the model as a polyhedron.
-inline CgalSurfaceMesh cgal_mesh_surface(const std::string& path, double h) {
+/// `meshed`, if given, is called once the mesh is extracted, before the input faces (which only
+/// the G1 check needs) are copied: a timer stops there. Throws std::runtime_error when CGAL
+/// cannot read the model as a polyhedron.
+inline CgalSurfaceMesh cgal_mesh_surface(const std::string& path, double h, const std::function<void()>& meshed = {}) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Polyhedron = CGAL::Mesh_polyhedron_3<K>::type;
   using MeshDomain = CGAL::Polyhedral_mesh_domain_with_features_3<K>;
@@ -89,6 +92,7 @@ inline CgalSurfaceMesh cgal_mesh_surface(const std::string& path, double h) {
   for (auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
     out.mesh.corners.push_back(id(v));
 
+  if (meshed) meshed();
   const Polyhedron& stored = domain.polyhedra().front();
   const auto patch_of = get(CGAL::face_patch_id_t<int>(), stored);
   for (auto f : faces(stored)) {
