@@ -2,8 +2,9 @@
 // triangles share are oriented alike (the shared edge traversed in opposite directions) by a
 // breadth-first search; a component all of whose edges have two triangles (closed) is then
 // turned so that its signed volume is positive (counter-clockwise seen from outside). A
-// non-orientable component keeps the orientation the search gave it. O(T + V) time and memory,
-// times the largest number of triangles around a vertex.
+// non-orientable component keeps the orientation the search gave it. O(T + V) memory; time
+// O(T + V) plus a sort of each vertex's edges by their other end (O(d log d) for d triangles
+// around the vertex).
 #pragma once
 
 #include <array>
