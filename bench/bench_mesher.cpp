@@ -1,9 +1,10 @@
 // The mesher end to end (Protect's balls made once outside the timing, then Mesher::run and
 // output, CPU time) at λ = 0.5% of the diagonal, started from the initial sample (the default)
 // and from the balls alone (the paper's start, MesherOptions::initial_sample = false); and the
-// initial sample's own parts: the domain's candidates and their selection; and the whole
-// pipeline at 2% (pipeline/), where the costs per input triangle weigh. Generated models and,
-// when fetched by scripts/get-cgal-data.sh, the libcgal-demo models.
+// initial sample's own parts: the domain's candidates and their selection; the whole pipeline
+// at 2% (pipeline/), where the costs per input triangle weigh; and the output's orientation
+// (orient/). Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
+// models.
 //   cmake --build build --target bench_mesher && build/bin/bench_mesher
 #include <benchmark/benchmark.h>
 
@@ -22,6 +23,7 @@
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
+#include <delpsc/refine/triangle_orientation.h>
 
 using namespace delpsc;
 
@@ -134,6 +136,25 @@ void pipeline(benchmark::State& state, const Model& m, double relative) {
       benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// orient_triangles on the mesh's own output at 0.5% (meshed once, before the timing), as
+// Mesher::output() calls it: the triangles copied and oriented again each iteration (the copy is
+// a few percent of it).
+void orient(benchmark::State& state, const Model& m) {
+  protect::BallSet set = *m.balls;
+  refine::ProtectedBalls balls(set);
+  refine::MesherOptions options;
+  options.facet_size = m.lambda;
+  refine::Mesher mesher(*m.domain, balls, options);
+  mesher.run();
+  const io::SurfaceMesh mesh = mesher.output();
+  for (auto _ : state) {
+    std::vector<std::array<std::uint32_t, 3>> triangles = mesh.triangles;
+    benchmark::DoNotOptimize(refine::orient_triangles(mesh.vertices, triangles));
+    benchmark::DoNotOptimize(triangles);
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+}
+
 const int registered = [] {
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
@@ -141,6 +162,7 @@ const int registered = [] {
     benchmark::RegisterBenchmark(("initial_sample/" + m.name).c_str(), initial_sample, m)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("candidates/" + m.name + "/2%").c_str(), candidates, m, 4.0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("pipeline/" + m.name + "/2%").c_str(), pipeline, m, 0.02)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("orient/" + m.name).c_str(), orient, m)->Unit(benchmark::kMillisecond);
   }
   return 0;
 }();
