@@ -349,6 +349,7 @@ void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
 
 void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick, double cover_power) {
   for (FacetRef& r : facet_refs_) forget(r);
+  cover_power_ = cover_power;
   facet_refs_.assign(4 * dt_->cell_capacity(), {});
   for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
     // Each finite facet once: from its finite cell of smaller id (a hull facet from its only
@@ -392,6 +393,7 @@ std::optional<std::uint32_t> RestrictedFacets::carry_over(std::uint32_t first, P
 
 void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted) {
   const bool insertion = inserted != delaunay::kNoPoint;
+  if (!insertion) cover_power_ = std::numeric_limits<double>::infinity();  // see rebuild()
   if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
   if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
   ++update_epoch_;
@@ -466,7 +468,7 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
       // Any record still reachable from either side is stale (its dual edge changed).
       forget(ref(f.cell, f.index));
       forget(ref(m.cell, m.index));
-      examine(f);
+      examine(f, cover_power_);
     }
   }
   for (FacetRef& r : doomed_)

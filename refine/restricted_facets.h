@@ -92,7 +92,9 @@ class RestrictedFacets {
   /// and is not queried: ~3 facets in 4 after the mesher's initial sample, the far side of the
   /// volume's tetrahedra. Of the others only the window |s| <= sqrt(bound - P) around the
   /// orthocentre is queried (nothing when the computed edge misses it). +inf (the default):
-  /// every facet's whole dual edge is queried.
+  /// every facet's whole dual edge is queried. update() goes on using the bound for the facets
+  /// of new cells until the first removal: an insertion only lowers every point's power
+  /// distance to its nearest vertex (a point it hides was dominated already), a removal may raise it.
   void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {},
                double cover_power = std::numeric_limits<double>::infinity());
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
@@ -108,8 +110,8 @@ class RestrictedFacets {
   /// Dual edges queried against the domain so far (segments and rays): the cost that
   /// carry-over and exclude_vertices save.
   std::size_t queries() const { return queries_; }
-  /// Facets rebuild() spared a query because of `cover_power` (their dual edge or its window
-  /// misses the domain).
+  /// Facets spared a query so far because of rebuild()'s `cover_power` (their dual edge or its
+  /// window misses the domain), by rebuild() and then by update().
   std::size_t skipped() const { return skipped_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
   /// The live records incident to vertex v, all patches.
@@ -201,6 +203,8 @@ class RestrictedFacets {
   std::vector<char> excluded_;                 // by PointId: exclude_vertices()
   std::size_t queries_ = 0;
   std::size_t skipped_ = 0;
+  // rebuild()'s proven cover, kept by update() until the first removal voids it (see rebuild).
+  double cover_power_ = std::numeric_limits<double>::infinity();
   std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;
