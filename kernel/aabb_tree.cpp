@@ -1,7 +1,9 @@
 #include "aabb_tree.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace delpsc::kernel {
 
@@ -73,13 +75,23 @@ class SlabQuery {
   double t_max_;
 };
 
+// The next float below f, for f > -inf (std::nextafter is a library call, and each query
+// rounds its reach with it): one step of the bit pattern, away from zero for a negative f.
+float float_below(float f) {
+  if (f == 0) return -std::numeric_limits<float>::denorm_min();
+  const auto u = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0 ? u - 1 : u + 1);
+}
+float float_above(float f) { return -float_below(-f); }
+
 // Single-precision bounds that contain [lo, hi]: each double rounded to a float, moved one float
-// further out when the rounding went inwards.
+// further out when the rounding went inwards (never from -inf down or +inf up: those compare
+// below or above every double).
 void store_box(const Box3& b, std::array<float, 6>& bounds) {
   for (int i = 0; i < 3; ++i) {
     float l = static_cast<float>(b.lo[i]), h = static_cast<float>(b.hi[i]);
-    if (static_cast<double>(l) > b.lo[i]) l = std::nextafter(l, -std::numeric_limits<float>::infinity());
-    if (static_cast<double>(h) < b.hi[i]) h = std::nextafter(h, std::numeric_limits<float>::infinity());
+    if (static_cast<double>(l) > b.lo[i]) l = float_below(l);
+    if (static_cast<double>(h) < b.hi[i]) h = float_above(h);
     bounds[i] = l;
     bounds[i + 3] = h;
   }
