@@ -141,13 +141,19 @@ delaunay::VoronoiEdge RestrictedFacets::dual_on_facet_line(delaunay::Facet f, co
 // visibly off (see dual_projected): such a facet is examined afresh each time.
 bool RestrictedFacets::well_conditioned(Facet f) const {
   constexpr double kRatio = 1e-5;
+  // Each cell's answer is kept until its slot is reused (update() clears it for created cells):
+  // a cell is asked once for each of its facets, the test is the same each time.
   const auto flat = [&](CellId c) {
+    if (c >= flat_.size()) flat_.resize(dt_->cell_capacity(), kFlatUnknown);
+    if (flat_[c] != kFlatUnknown) return flat_[c] == kFlatYes;
     const Vec3 a = dt_->point(dt_->vertex(c, 0)).point();
     const Vec3 ab = dt_->point(dt_->vertex(c, 1)).point() - a;
     const Vec3 ac = dt_->point(dt_->vertex(c, 2)).point() - a;
     const Vec3 ad = dt_->point(dt_->vertex(c, 3)).point() - a;
     const double volume = ab.dot(ac.cross(ad));  // squared below: no square roots
-    return volume * volume <= kRatio * kRatio * ab.squaredNorm() * ac.squaredNorm() * ad.squaredNorm();
+    const bool is_flat = volume * volume <= kRatio * kRatio * ab.squaredNorm() * ac.squaredNorm() * ad.squaredNorm();
+    flat_[c] = is_flat ? kFlatYes : kFlatNo;
+    return is_flat;
   };
   const Facet m = dt_->mirror_facet(f);
   if (dt_->is_infinite(f.cell) || dt_->is_infinite(m.cell) || flat(f.cell) || flat(m.cell)) return false;
@@ -350,6 +356,7 @@ void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
 void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick, double cover_power) {
   for (FacetRef& r : facet_refs_) forget(r);
   cover_power_ = cover_power;
+  flat_.assign(dt_->cell_capacity(), kFlatUnknown);
   facet_refs_.assign(4 * dt_->cell_capacity(), {});
   for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
     // Each finite facet once: from its finite cell of smaller id (a hull facet from its only
@@ -396,6 +403,9 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<Po
   if (!insertion) cover_power_ = std::numeric_limits<double>::infinity();  // see rebuild()
   if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
   if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
+  // A created cell may reuse a destroyed one's slot: forget what well_conditioned() knew of it.
+  if (flat_.size() < dt_->cell_capacity()) flat_.resize(dt_->cell_capacity(), kFlatUnknown);
+  for (const CellId c : changes.created) flat_[c] = kFlatUnknown;
   ++update_epoch_;
   // What the boundary facets held, read from the destroyed side (ChangeSet::replaced) before the
   // loop below clears it: those lines are about to be read anyway, while the surviving

@@ -196,6 +196,9 @@ class RestrictedFacets {
   // still hold the old references when update() runs, so no lookup by vertices is ever needed.
   std::vector<FacetRef> facet_refs_;
   std::vector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
+  // Per cell slot, whether well_conditioned() found the cell nearly flat (unknown until asked).
+  static constexpr std::uint8_t kFlatUnknown = 0, kFlatNo = 1, kFlatYes = 2;
+  mutable std::vector<std::uint8_t> flat_;
   std::vector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
   std::vector<FacetRef> boundary_refs_;        // scratch: per created cell, its boundary facet's old ref
   std::uint32_t update_epoch_ = 0;
