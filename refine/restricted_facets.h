@@ -93,8 +93,9 @@ class RestrictedFacets {
   /// volume's tetrahedra. Of the others only the window |s| <= sqrt(bound - P) around the
   /// orthocentre is queried (nothing when the computed edge misses it). +inf (the default):
   /// every facet's whole dual edge is queried. update() goes on using the bound for the facets
-  /// of new cells until the first removal: an insertion only lowers every point's power
-  /// distance to its nearest vertex (a point it hides was dominated already), a removal may raise it.
+  /// of new cells until the first removal: the least power distance to the vertices equals the
+  /// least to all points inserted, hidden ones included, so an insertion (whatever it hides)
+  /// only lowers it at every point of space; a removal may raise it.
   void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {},
                double cover_power = std::numeric_limits<double>::infinity());
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
