@@ -154,10 +154,13 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
 std::uint32_t AabbTree::sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
                                   float lo, float hi, int depth, std::span<const Vec3> vertices,
                                   std::span<const std::array<std::uint32_t, 3>> triangles) {
-  if (depth >= kSahDepth || !(hi > lo)) return begin;
+  // Centroids beyond the float range are infinite: no SAH cut then (a median split follows),
+  // rather than bins indexed by a converted NaN or infinity.
+  if (depth >= kSahDepth || !(hi > lo) || !std::isfinite(hi) || !std::isfinite(lo)) return begin;
   const double scale = kSahBins / (double(hi) - double(lo));
   auto bin_of = [&](const BuildItem& item) {
-    return std::min(kSahBins - 1, static_cast<int>((double(item.centroid[axis]) - double(lo)) * scale));
+    const double x = (double(item.centroid[axis]) - double(lo)) * scale;  // in [0, kSahBins]
+    return x < kSahBins - 1 ? static_cast<int>(x) : kSahBins - 1;
   };
   std::array<Box3, kSahBins> bin_box;
   std::array<std::uint32_t, kSahBins> bin_count{};

@@ -232,6 +232,50 @@ TEST_CASE("the plane filter loses no triangle a segment touches, however close t
   CHECK(total > 3000);  // most of these segments do touch their triangle: not vacuous
 }
 
+TEST_CASE("segments touching a triangle only at a vertex find it, whatever the float rounding of the boxes") {
+  // Node bounds and each query's reach are rounded outwards to floats; a segment that leaves a
+  // triangle's vertex away from the triangle shares exactly one coordinate value with the
+  // triangle's box on each axis, so a rounding one float too far inwards, on either box, loses
+  // the triangle. Coordinates of every sign and scale, most of them not floats, some beyond the
+  // float range or near its smallest normal.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0.5, 1), w(-1, 1);
+  std::size_t total = 0;
+  for (const double scale : {1.0, 1e-3, 3e-38, 1e12, 1e39, 1e-45})
+    for (const double sign : {1.0, -1.0}) {
+      Soup s;
+      std::vector<Vec3> tips;  // per triangle: its vertex 0 and the outward direction there
+      std::vector<Vec3> outward;
+      for (int i = 0; i < 60; ++i) {
+        const Vec3 v = sign * scale * Vec3(u(rng), u(rng), u(rng));
+        // The triangle lies in the box's negative octant from v: v is its largest corner on
+        // every axis, so the segment from v into the positive octant touches it at v alone.
+        const auto base = static_cast<std::uint32_t>(s.vertices.size());
+        s.vertices.push_back(v);
+        s.vertices.push_back(v - scale * Vec3(u(rng), 0.1 * u(rng), 0.2 * u(rng)));
+        s.vertices.push_back(v - scale * Vec3(0.1 * u(rng), u(rng), 0.3 * u(rng)));
+        s.triangles.push_back({base, base + 1, base + 2});
+        tips.push_back(v);
+        outward.push_back(scale * Vec3(u(rng), u(rng), u(rng)));
+      }
+      const AabbTree tree(s.vertices, s.triangles);
+      for (std::size_t t = 0; t < tips.size(); ++t) {
+        const Vec3& a = tips[t];
+        const Vec3 b = a + outward[t];
+        std::vector<TriangleIntersection> hits;
+        tree.intersect_segment(a, b, hits);
+        const auto got = ids_of(hits);
+        CHECK(got == brute_segment(s, a, b));
+        CHECK(std::binary_search(got.begin(), got.end(), static_cast<std::uint32_t>(t)));
+        hits.clear();
+        tree.intersect_ray(a, outward[t], hits);
+        CHECK(ids_of(hits) == brute_ray(s, a, outward[t]));
+        total += got.size();
+      }
+    }
+  CHECK(total >= 12 * 60);  // every segment touches at least its own triangle
+}
+
 TEST_CASE("closest point equals brute force") {
   std::mt19937_64 rng(99);
   const Soup s = random_soup(rng, 2000, 0.03);
