@@ -75,8 +75,8 @@ class SlabQuery {
   double t_max_;
 };
 
-// The next float below f, for f > -inf (std::nextafter is a library call, and each query
-// rounds its reach with it): one step of the bit pattern, away from zero for a negative f.
+// The next float below f, for f > -inf: one step of the bit pattern, away from zero for a
+// negative f (std::nextafter is a library call).
 float float_below(float f) {
   if (f == 0) return -std::numeric_limits<float>::denorm_min();
   const auto u = std::bit_cast<std::uint32_t>(f);
@@ -281,12 +281,16 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     reach.hi[i] = is_ray ? (b[i] > a[i] ? inf : a[i]) : std::max(a[i], b[i]);
   }
   const double a_size = a.cwiseAbs().maxCoeff(), b_size = b.cwiseAbs().maxCoeff();  // for plane_filter
-  // The reach in single precision, rounded outwards like the nodes' bounds, so that it is
-  // compared with them float to float: it contains the exact reach, so a node whose bounds miss
-  // it misses the exact reach too (nothing the piece meets is rejected), and each node costs six
-  // float comparisons instead of six conversions to double first.
+  // The reach in single precision, compared with the nodes' float bounds float to float (six
+  // float comparisons a node instead of six conversions to double first). Rounding to nearest
+  // is enough here: it is monotone, and a node's bounds are rounded outwards, so where the exact
+  // boxes overlap, node lo <= reach hi gives float(node lo) <= nearest(node lo) <= nearest(reach
+  // hi), and likewise on the other side; no node the piece meets is rejected.
   std::array<float, 6> reach_f;
-  store_box(reach, reach_f);
+  for (int i = 0; i < 3; ++i) {
+    reach_f[i] = static_cast<float>(reach.lo[i]);
+    reach_f[i + 3] = static_cast<float>(reach.hi[i]);
+  }
   const auto may_hit = [&](std::uint32_t i) {
     const std::array<float, 6>& n = nodes_[i].bounds;
     return n[0] <= reach_f[3] && reach_f[0] <= n[3] && n[1] <= reach_f[4] && reach_f[1] <= n[4] &&
