@@ -94,9 +94,11 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   phases.emplace_back("features", seconds_since(t0));
   progress.phase("protect");
   const auto t_protect = Clock::now();
+  // One floor for every ball of the run, Protect's and RefineBall's (protect::options_for_size).
+  const protect::ProtectOptions ball_options = protect::options_for_size(lambda, (box.hi - box.lo).norm());
   std::optional<protect::BallSet> ball_set;
   try {
-    ball_set.emplace(protect::protect(domain.complex(), lambda));
+    ball_set.emplace(protect::protect(domain.complex(), lambda, ball_options));
   } catch (const protect::ProtectionError& e) {
     throw Failure{kBadInput, o.input + ": " + e.what()};
   }
@@ -104,7 +106,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   phases.emplace_back("protect", seconds_protect);
 
   const auto t_refine = Clock::now();
-  refine::ProtectedBalls balls(*ball_set, refine::refinement_ball_options(lambda, (box.hi - box.lo).norm()));
+  refine::ProtectedBalls balls(*ball_set, ball_options);
   refine::MesherOptions options;
   options.facet_size = lambda;
   if (!o.facet_distance.empty()) {

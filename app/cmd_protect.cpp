@@ -115,7 +115,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<protect::BallSet> balls;
   try {
-    balls.emplace(protect::protect(complex, lambda, {}, &stats));
+    balls.emplace(protect::protect(complex, lambda, protect::options_for_size(lambda, diagonal), &stats));  // as mesh
   } catch (const protect::ProtectionError& e) {
     throw Failure{kBadInput, o.input + ": " + e.what()};
   }

@@ -23,26 +23,23 @@ Engine::Engine(BallSet& b, const ProtectOptions& l, ProtectStats& s)
       first_new_id_(static_cast<BallId>(b.id_bound())),
       min_radius_(l.min_radius_fraction * b.diagonal()) {}
 
-void Engine::check_caps(double radius) const {
-  char message[320];
-  if (balls.size() >= options.max_balls) {
+void Engine::fail_caps(double radius, const Vec3& where) const {
+  char message[400];
+  if (balls.size() >= options.max_balls)
     std::snprintf(message, sizeof message,
-                  "protection stopped: more than %zu balls (the cap); curves closer together, or "
-                  "meeting at smaller angles, than the size asked for can resolve?",
-                  options.max_balls);
-    throw ProtectionError(message);
-  }
-  if (!(radius >= min_radius_)) {
+                  "protection stopped: more than %zu balls (the cap), the last at (%.6g, %.6g, %.6g); curves "
+                  "closer together, or meeting at smaller angles, than the size asked for can resolve?",
+                  options.max_balls, where.x(), where.y(), where.z());
+  else
     std::snprintf(message, sizeof message,
-                  "protection stopped: a ball of radius %.3g, below the cap of %.3g (%.3g of the "
-                  "bounding-box diagonal), with %zu balls; curves touching or crossing?",
-                  radius, min_radius_, options.min_radius_fraction, balls.size());
-    throw ProtectionError(message);
-  }
+                  "protection stopped: a ball of radius %.3g at (%.6g, %.6g, %.6g), below the cap of %.3g "
+                  "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there?",
+                  radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size());
+  throw ProtectionError(message);
 }
 
 BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
-  check_caps(radius);
+  if (!within_caps(radius)) fail_caps(radius, complex.vertices[complex.corner_vertex[corner]]);
   const BallId old = balls.corner_ball(corner);
   const BallId id = balls.set_corner_ball(corner, radius);
   if (old != kNoBall && old < first_new_id_) removed_.push_back(old);
@@ -51,7 +48,7 @@ BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
 }
 
 BallId Engine::insert_interior(std::uint32_t curve, BallId after, double s, double radius) {
-  check_caps(radius);
+  if (!within_caps(radius)) fail_caps(radius, complex.point_at(curve, s));
   const BallId id = balls.insert_interior(curve, after, s, radius);
   created_.push_back(id);
   return id;
@@ -99,6 +96,10 @@ std::vector<double> nearest_corner_distances(const Complex& complex) {
   return d;
 }
 
+// Step 2 grades a curve's first cover when min(r_u, r_v) is below this fraction of λ: the
+// paper's uniform α would put more than 16 times the balls of a cover at λ along the whole curve.
+constexpr double kGradedFirstCoverBelow = 1.0 / 16;
+
 // Step 1: the vertex ball radius of every corner (protect.h).
 double vertex_radius(const BallSet& balls, std::uint32_t corner, double nearest, double lambda) {
   const Complex& complex = balls.complex();
@@ -132,13 +133,19 @@ BallSet protect(const Complex& complex, double lambda, const ProtectOptions& opt
   for (std::uint32_t k = 0; k < complex.corner_count(); ++k)
     engine.set_corner_ball(k, vertex_radius(balls, k, nearest[k], lambda));
 
-  // 2. Cover each curve between its vertex balls with α = min(r_u, r_v).
+  // 2. Cover each curve between its vertex balls with α = min(r_u, r_v), or graded from each
+  //    end up to 6λ/7 where that α is far below λ (protect.h).
   for (std::uint32_t c = 0; c < complex.curve_count(); ++c) {
     const Curve& curve = complex.curves[c];
     const BallOnCurve u{balls.corner_ball(curve.start_corner), 0.0};
     const BallOnCurve v{balls.corner_ball(curve.end_corner), curve.length};
+    const double r_u = balls[u.id].radius, r_v = balls[v.id].radius;
     detail::CoverSizes sizes;
-    sizes.alpha = std::min(balls[u.id].radius, balls[v.id].radius);
+    sizes.alpha = std::min(r_u, r_v);
+    if (options.graded_cover && sizes.alpha < kGradedFirstCoverBelow * lambda) {
+      sizes = detail::graded_cover_sizes(6 * lambda / 7, r_u, r_v);
+      ++engine.stats.graded_first_covers;
+    }
     detail::cover(engine, c, u, v, sizes);
   }
 

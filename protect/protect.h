@@ -11,7 +11,13 @@
 //     ball, done before the curves are covered so they are covered once.
 //  2. Each curve σ(u, v) is covered by Cover(x, y, α), α = min(r_u, r_v) (cover.cpp): aiding
 //     balls β = B(y_i, α/3), next centre where seg_σ(β) ends, radius α, and the end game with the
-//     enlarged aiding ball (2α/3) or the last ball enlarged (7α/6), exactly as §2.2.
+//     enlarged aiding ball (2α/3) or the last ball enlarged (7α/6), exactly as §2.2. Except
+//     where min(r_u, r_v) < λ/16 (with graded_cover): two corners 10^-5 apart put a ball of
+//     that size on every curve leaving either, and the paper's uniform α would then cover a
+//     curve of length L with some L/α balls - on the libcgal-demo model mpi.off at λ = 2%,
+//     millions, for minutes, before the ball cap. Such a curve gets the graded size below with
+//     α_max = 6λ/7 (its 7α/6 end game stays within λ), small next to the small vertex ball and
+//     growing along the curve: a few dozen balls.
 //  3. Balls larger than λ are refined (refine_ball.cpp).
 //  4. Separate (separate.cpp) until balls on different curves are disjoint (C3.b).
 //
@@ -40,7 +46,8 @@
 //    seg(b_2) may be short); α <= 0.6 r_2 + 0.1 (4α/3) gives α <= 0.69 r_2;
 //  - every new ball is at most 7/6 α_max = 7/24 r_b, Lemma 2.5's factor, so termination holds.
 // The paper's α = r_σ/4 is the special case of a flat size at a quarter of the smallest
-// neighbour; Protect's first cover of each curve (step 2) keeps the paper's α = min(r_u, r_v).
+// neighbour. Protect's first cover of a curve (step 2) keeps the paper's α = min(r_u, r_v)
+// unless that is below λ/16; the same derivation holds there, the neighbours being vertex balls.
 //
 // Two more choices where the paper leaves the order open:
 //  - Balls are refined in rounds: every ball that must be refined now (all balls above λ; the
@@ -65,6 +72,7 @@
 // ball smaller than min_radius_fraction of the bounding-box diagonal.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 #include <vector>
@@ -84,10 +92,29 @@ struct ProtectOptions {
   double min_radius_fraction = 1e-10;  ///< of the bounding-box diagonal
   /// Refine a run of consecutive balls as one (see the file comment); false: one at a time.
   bool refine_runs = true;
-  /// RefineBall covers with the graded size (see the file comment); false: the paper's
-  /// α = r_σ/4 throughout the gap.
+  /// RefineBall covers with the graded size (see the file comment), and so does Protect's first
+  /// cover of a curve whose smaller vertex ball is below λ/16; false: the paper's α = r_σ/4
+  /// throughout the gap, and α = min(r_u, r_v) for every first cover.
   bool graded_cover = true;
 };
+
+/// The smallest ball, as a fraction of λ, that a run at size λ may make (protect::protect's
+/// first balls and RefineBall's inside the refinement loop alike). A ball 10^4 times smaller
+/// than λ means the model has features λ cannot see - a sharp edge that is no curve at the
+/// chosen feature angle, a surface folding back on itself, two curves 10^-5 apart - and with
+/// the default floor (1e-10 of the diagonal) such a run went on for minutes before failing the
+/// same way: the refinement loop halving balls, and Protect's Separate on the libcgal-demo
+/// model mpi.off (curves 5e-6 apart, a diagonal of 35) passing 5,000,000 balls after 229 s at
+/// λ = 2% where this floor stops it after 1 s. The acceptance tests mesh every test model with it.
+inline constexpr double kSmallestBallOfLambda = 1e-4;
+
+/// `base` with the floor above for balls at size λ on a model whose bounding box has diagonal
+/// `diagonal` (never lower than base's own floor).
+inline ProtectOptions options_for_size(double lambda, double diagonal, ProtectOptions base = {}) {
+  if (diagonal > 0)
+    base.min_radius_fraction = std::max(base.min_radius_fraction, kSmallestBallOfLambda * lambda / diagonal);
+  return base;
+}
 
 /// What happened, for reports and benchmarks.
 struct ProtectStats {
@@ -98,6 +125,7 @@ struct ProtectStats {
   std::size_t conflicts = 0;        ///< intersecting pairs on different curves found (C3.b)
   std::size_t repairs = 0;          ///< adjacent pairs found failing C2 or C3.a after a Cover
   std::size_t irregular = 0;        ///< Cover centres put midway because the neighbours' segments overlapped past a centre
+  std::size_t graded_first_covers = 0;  ///< curves whose first cover (step 2) was graded: min(r_u, r_v) < λ/16
 };
 
 /// Protect(D, λ): the protecting balls of every corner and curve of `complex`, all of radius

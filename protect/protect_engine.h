@@ -31,7 +31,11 @@ class Engine {
   const std::vector<BallId>& removed() const { return removed_; }
 
  private:
-  void check_caps(double radius) const;
+  /// Whether a new ball of this radius keeps within the caps; if not, fail_caps says which.
+  bool within_caps(double radius) const { return balls.size() < options.max_balls && radius >= min_radius_; }
+  /// Throws the ProtectionError for a ball failing within_caps; `where`, its centre, is named
+  /// (where the model needs balls that small).
+  [[noreturn]] void fail_caps(double radius, const Vec3& where) const;
 
   BallId first_new_id_;
   double min_radius_;
@@ -45,6 +49,13 @@ struct CoverSizes {
   bool graded = false;
   double left_limit = 0, right_limit = 0, slope = 0;
 };
+
+/// The graded size of protect.h between neighbours of radii r_left and r_right, up to alpha:
+/// at most 0.6 of a neighbour's radius next to it, growing by at most 0.1 per unit of curve.
+inline CoverSizes graded_cover_sizes(double alpha, double r_left, double r_right) {
+  constexpr double kJunctionFraction = 0.6, kGradedSlope = 0.1;
+  return {alpha, true, kJunctionFraction * r_left, kJunctionFraction * r_right, kGradedSlope};
+}
 
 /// Cover(x, y, α) of §2.2 on `curve` between the adjacent balls `left` and `right` (x the end
 /// of seg(left), y the start of seg(right)); returns the ids of the balls it made, in order

@@ -18,11 +18,6 @@ namespace detail {
 
 namespace {
 
-// The graded size (protect.h): at most this fraction of a neighbour's radius next to it, and
-// growing by at most this much per unit of curve length.
-constexpr double kJunctionFraction = 0.6;
-constexpr double kGradedSlope = 0.1;
-
 // Refines the run of consecutive marked interior balls that contains `seed`, unmarking them.
 void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked) {
   BallSet& balls = engine.balls;
@@ -42,15 +37,10 @@ void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked) {
   }
   const double r_left = balls[left.id].radius, r_right = balls[right.id].radius;
   CoverSizes sizes;
-  if (engine.options.graded_cover) {
-    sizes.graded = true;
-    sizes.alpha = r_run / 4;
-    sizes.left_limit = kJunctionFraction * r_left;
-    sizes.right_limit = kJunctionFraction * r_right;
-    sizes.slope = kGradedSlope;
-  } else {
+  if (engine.options.graded_cover)
+    sizes = graded_cover_sizes(r_run / 4, r_left, r_right);
+  else
     sizes.alpha = std::min({r_run, r_left, r_right}) / 4;  // r_σ / 4
-  }
   for (BallId id = lo, stop = balls[hi].next; id != stop;) {
     const BallId next = balls[id].next;
     marked[id] = false;

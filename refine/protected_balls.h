@@ -11,23 +11,6 @@
 
 namespace delpsc::refine {
 
-/// The smallest ball RefineBall may make inside the refinement loop, as a fraction of λ.
-/// RefineBall (§3 step 2a) shrinks balls where the disk condition fails near a curve; a ball
-/// 10^4 times smaller than λ means the model has features λ cannot see - a sharp edge that is no
-/// curve at the chosen feature angle, a surface nearly touching itself - and with protect's own
-/// floor (1e-10 of the diagonal) such a run went on for minutes, halving balls, before failing
-/// the same way. The acceptance tests mesh every test model with this floor.
-inline constexpr double kSmallestRefinedBallOfLambda = 1e-4;
-
-/// ProtectOptions for the balls refined during meshing at size λ of a model whose bounding box
-/// has diagonal `diagonal`: `base` with the floor above (never lower than base's own).
-inline protect::ProtectOptions refinement_ball_options(double lambda, double diagonal,
-                                                       protect::ProtectOptions base = {}) {
-  if (diagonal > 0)
-    base.min_radius_fraction = std::max(base.min_radius_fraction, kSmallestRefinedBallOfLambda * lambda / diagonal);
-  return base;
-}
-
 class ProtectedBalls final : public BallSource {
  public:
   /// `balls` must outlive this object; it is edited by refine().

@@ -176,6 +176,63 @@ TEST_CASE("protect: the paper's α = r_σ/4 and the one-by-one order also satisf
   }
 }
 
+// A frustum of a square pyramid, base [-1/2, 1/2]^2 at z = 0, top [-h, h]^2 at z = 1: every
+// edge is a curve (faces meet at 63° to 117°), the four top corners 2h apart.
+static io::TriangleSoup frustum(double h) {
+  io::TriangleSoup s;
+  for (const double z : {0.0, 1.0})
+    for (const auto& [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      s.vertices.push_back(Vec3(x, y, 0) * (z == 0 ? 0.5 : h) + Vec3(0, 0, z));
+  s.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}};
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const std::uint32_t j = (k + 1) % 4;
+    s.triangles.push_back({k, j, j + 4});
+    s.triangles.push_back({k, j + 4, k + 4});
+  }
+  return s;
+}
+
+TEST_CASE("protect: corners 1e-5 apart get a graded first cover, not a uniform one at their size") {
+  // The top corners' balls are ~3e-6; the paper's first cover with α = min(r_u, r_v) lays balls
+  // that small along each slanted edge of length 1.2 (some 10^6 balls), though the edges
+  // diverge and only need balls that small near the top. Graded from the small vertex ball up
+  // to 6λ/7, they stay few.
+  const protect::Complex complex = protect::build_complex(frustum(5e-6));
+  REQUIRE(complex.corner_count() == 8);
+  REQUIRE(complex.curve_count() == 12);
+  const double lambda = 0.04 * BallSet(complex).diagonal();
+  protect::ProtectStats stats;
+  const BallSet balls = protect::protect(complex, lambda, {}, &stats);
+  check_protection(balls, lambda);
+  CHECK(stats.graded_first_covers == 8);  // the top square's four edges and the slanted four
+  CHECK(balls.size() < 2000);
+  protect::ProtectOptions paper;  // the uniform first cover passes any modest cap
+  paper.graded_cover = false;
+  paper.max_balls = 100'000;
+  CHECK_THROWS_AS(protect::protect(complex, lambda, paper), protect::ProtectionError);
+}
+
+TEST_CASE("protect: the floor for a size stops balls 10^4 times below it, naming where") {
+  // The 10° wedge at λ = 5% of the diagonal needs balls ~3% of λ at its apex: above the floor.
+  const protect::Complex wedge = protect::build_complex(io::make_wedge(10, 0.1));
+  const double diagonal = BallSet(wedge).diagonal();
+  check_protection(protect::protect(wedge, 0.05 * diagonal, protect::options_for_size(0.05 * diagonal, diagonal)),
+                   0.05 * diagonal);
+  // Corners 1e-5 apart on a model of diagonal ~1.7 need balls ~3e-6 < 1e-4 λ at λ = 4%.
+  const protect::Complex cut = protect::build_complex(frustum(5e-6));
+  const double d = BallSet(cut).diagonal();
+  try {
+    protect::protect(cut, 0.04 * d, protect::options_for_size(0.04 * d, d));
+    FAIL("no error at the floor");
+  } catch (const protect::ProtectionError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("below the cap") != std::string::npos);
+    CHECK(what.find(" at (") != std::string::npos);
+  }
+  CHECK(protect::options_for_size(0.04 * d, d).min_radius_fraction == doctest::Approx(0.04e-4));
+  CHECK(protect::options_for_size(1e-12, 1).min_radius_fraction == protect::ProtectOptions{}.min_radius_fraction);
+}
+
 TEST_CASE("protect: safety caps end in a ProtectionError, bad arguments in invalid_argument") {
   const protect::Complex wedge = protect::build_complex(io::make_wedge(10, 0.1));
   protect::ProtectOptions few;

@@ -116,10 +116,14 @@ TEST_CASE("the paper's global choice in step 2(a)") {
   // A prism with a curve 2% of the side long, balls protected at 30% of the diagonal and facets
   // refined to 2%: D1/D2 fail around the short curve while every restricted facet is already
   // smaller than the largest ball, so the global rule must RefineBall (d2 > d1). (On most models
-  // the disk condition holds even around big balls and RefineBall is never needed.)
+  // the disk condition holds even around big balls and RefineBall is never needed.) Protect as
+  // the paper does: the graded first cover of the curves leaving the short one (its corners'
+  // balls are below λ/16) makes balls for which the disk condition holds there at once.
   refine::PolygonDomain domain(io::make_short_curve_prism(0.02, 0.1));
   const double diag = (domain.bounding_box().hi - domain.bounding_box().lo).norm();
-  protect::BallSet set = protect::protect(domain.complex(), 0.3 * diag);
+  protect::ProtectOptions paper;
+  paper.graded_cover = false;
+  protect::BallSet set = protect::protect(domain.complex(), 0.3 * diag, paper);
   refine::ProtectedBalls balls(set);
   refine::MesherOptions options;
   options.facet_size = 0.02 * diag;

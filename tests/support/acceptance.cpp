@@ -26,8 +26,9 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   const refine::PolygonDomain domain(soup);
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = size_fraction * (box.hi - box.lo).norm();
-  protect::BallSet set = protect::protect(domain.complex(), lambda);
-  refine::ProtectedBalls balls(set, refine::refinement_ball_options(lambda, (box.hi - box.lo).norm()));  // as delpsc mesh
+  const protect::ProtectOptions ball_options = protect::options_for_size(lambda, (box.hi - box.lo).norm());
+  protect::BallSet set = protect::protect(domain.complex(), lambda, ball_options);  // as delpsc mesh
+  refine::ProtectedBalls balls(set, ball_options);
   refine::MesherOptions options;
   options.facet_size = lambda;
   options.max_vertices = max_vertices;
