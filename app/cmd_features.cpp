@@ -41,6 +41,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
   report("closed_curves", complex.closed_curve_count());
   report("patches", complex.patches.size());
   report("patches_without_boundary", complex.patches_without_boundary());
+  report("pinched_vertices", complex.pinches.size());
   report("seconds", seconds);
   if (g.verbosity > 0) {
     for (std::size_t p = 0; p < complex.patches.size(); ++p)
@@ -83,7 +84,7 @@ Runner register_features(CLI::App& app) {
                  "Draw the complex to an SVG picture: patches coloured and shaded, curves and corners dark");
   app.footer(
       "Prints key=value lines: triangles, zero_area_triangles, corners, curves, closed_curves, "
-      "patches, patches_without_boundary, seconds.\n\nExample:\n"
+      "patches, patches_without_boundary, pinched_vertices (where a patch touches itself only at a vertex), seconds.\n\nExample:\n"
       "  delpsc features fandisk.off --angle 60 -o fandisk-features.vtu\n"
       "  delpsc features samples/part.off --preview part-features.svg");
   return [o](const GlobalOptions& g) { return run(*o, g); };

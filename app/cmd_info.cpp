@@ -44,6 +44,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("corners", complex.corner_count());
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
+  report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
   const std::size_t crossing = protect::find_self_intersections(complex, kSelfIntersectionsCounted).size();
   report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
   report("warnings", model.report.warnings.size());
@@ -51,6 +52,11 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     std::fprintf(stderr,
                  "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",
                  o.input.c_str(), crossing == kSelfIntersectionsCounted ? "at least " : "", crossing);
+  if (!complex.pinches.empty() && !g.quiet)
+    std::fprintf(stderr,
+                 "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex (at --angle %g); "
+                 "`delpsc mesh` refuses such a model\n",
+                 o.input.c_str(), complex.pinches.size(), o.angle);
   return kOk;
 }
 
@@ -64,7 +70,7 @@ Runner register_info(CLI::App& app) {
   app.footer(
       "Prints key=value lines: format, vertices, triangles, merged_vertices, "
       "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
-      "patches, self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), warnings.\n\nExample:\n  delpsc info part.stl");
+      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), warnings.\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

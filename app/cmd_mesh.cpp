@@ -84,6 +84,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   reject_self_intersections(complex, o.input);
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
+  reject_pinched_patches(complex, o.input);
   const refine::PolygonDomain domain(std::move(complex));
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());

@@ -146,6 +146,12 @@ class Complex {
   std::vector<std::uint32_t> patch_curve_offsets, patch_curves;
   /// Corners that are vertices of the patch's triangles, increasing.
   std::vector<std::uint32_t> patch_corner_offsets, patch_corners;
+  /// Where a patch touches itself only at a vertex: (vertex, patch) pairs, increasing, for
+  /// each vertex around which the patch's triangles form more than one fan through shared
+  /// edges (both sides of a slit share the slit's edges: one fan). The patch is then no
+  /// 2-manifold with boundary there, which DelPSC assumes (§1.1): its umbrella at that vertex
+  /// can never be one disk (D1), so the mesher refuses such a complex.
+  std::vector<std::array<std::uint32_t, 2>> pinches;
 
   CleanupReport cleanup;
   ComplexOptions options;  ///< as used (feature_polylines in soup indices)

@@ -48,7 +48,7 @@ VertexFans find_patches(Complex& complex) {
   // along any edge for sheets, along a non-feature edge for wedges. A set never leaves its
   // vertex, and a set's representative is its smallest corner.
   const auto n_corners = 3 * static_cast<std::size_t>(n_tris);
-  UnionFind sheets(n_corners), wedges(n_corners);
+  UnionFind sheets(n_corners), wedges(n_corners), patch_fans(n_corners);
   auto corner_at = [&](std::uint32_t t, std::uint32_t v) {
     const auto& tri = complex.triangles[t];
     return 3 * t + (tri[0] == v ? 0u : tri[1] == v ? 1u : 2u);
@@ -63,7 +63,25 @@ VertexFans find_patches(Complex& complex) {
         sheets.unite(first, other);
         if (smooth) wedges.unite(first, other);
       }
+      // Fans of one patch: along an edge, each triangle joins the first one of its patch.
+      for (std::size_t i = 1; i < faces.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (complex.triangle_patch[faces[i]] == complex.triangle_patch[faces[j]]) {
+            patch_fans.unite(corner_at(faces[j], v), corner_at(faces[i], v));
+            break;
+          }
     }
+  }
+  // A vertex with two fans of one patch: two roots of patch_fans at it with the same patch.
+  {
+    std::vector<std::array<std::uint32_t, 2>> fan_roots;  // (vertex, patch), one per fan
+    for (std::uint32_t c = 0; c < n_corners; ++c)
+      if (patch_fans.find(c) == c) fan_roots.push_back({complex.triangles[c / 3][c % 3], complex.triangle_patch[c / 3]});
+    std::sort(fan_roots.begin(), fan_roots.end());
+    complex.pinches.clear();
+    for (std::size_t i = 1; i < fan_roots.size(); ++i)
+      if (fan_roots[i] == fan_roots[i - 1] && (complex.pinches.empty() || complex.pinches.back() != fan_roots[i]))
+        complex.pinches.push_back(fan_roots[i]);
   }
   VertexFans fans;
   fans.vertex_sheets.assign(complex.vertices.size(), 0);

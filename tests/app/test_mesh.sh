@@ -163,6 +163,22 @@ expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "
 # towards the vertex cap); refused like a crossing, naming the vertex.
 printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 1e-15\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$TMP/flat.off"
 expect 2 "the model nearly touches itself: vertex 3 (0.3, 0.3, 1e-15)" -- mesh "$TMP/flat.off" -o "$TMP/x.off"
+# A 3x3 grid sheet without two opposite triangles at its vertex (1, 1): one patch whose triangles
+# form two fans there, touching only at the vertex (elephant-with-holes.off has 60 such): refused
+# at once instead of shrinking balls there until the floor.
+{
+  printf 'OFF\n16 16 0\n'
+  for j in 0 1 2 3; do for i in 0 1 2 3; do printf '%d %d 0\n' "$i" "$j"; done; done
+  for j in 0 1 2; do for i in 0 1 2; do
+    a=$((j * 4 + i)); b=$((a + 1)); c=$((a + 5)); d=$((a + 4))
+    [[ $i$j == 00 ]] || printf '3 %d %d %d\n' "$a" "$b" "$c"
+    [[ $i$j == 11 ]] || printf '3 %d %d %d\n' "$a" "$c" "$d"
+  done; done
+} >"$TMP/pinched.off"
+expect 2 "patch 0 touches itself only at the vertex (1, 1, 0)" -- mesh "$TMP/pinched.off" -o "$TMP/x.off"
+[[ ! -e "$TMP/x.off" ]] || fail "pinched: an output file was written"
+expect 0 "" -- info "$TMP/pinched.off"
+[[ "$(value pinched_vertices)" == "1" ]] || fail "pinched: pinched_vertices=$(value pinched_vertices)"
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
 expect 2 "is below 1/10000 of --size" -- mesh "$TMP/cube.off" --size 10% --facet-distance 1e-12 -o "$TMP/x.off"

@@ -182,6 +182,40 @@ TEST_CASE("inconsistently oriented triangles make no false features") {
   CHECK(test::patch_topologies(c) == Topologies{{1, 1}});
 }
 
+TEST_CASE("a patch touching itself only at a vertex is a pinch") {
+  // Around the sheet's centre vertex 12, drop two triangles that share no edge and leave a
+  // triangle between them on either side: its triangles form two fans, still one patch.
+  io::TriangleSoup s = io::make_square_sheet(4);
+  CHECK(build_complex(s).pinches.empty());
+  std::vector<std::size_t> around;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    if (std::count(s.triangles[t].begin(), s.triangles[t].end(), 12u)) around.push_back(t);
+  REQUIRE(around.size() == 6);
+  const auto shares_edge = [&](std::size_t a, std::size_t b) {
+    int common = 0;
+    for (const auto u : s.triangles[a]) common += static_cast<int>(std::count(s.triangles[b].begin(), s.triangles[b].end(), u));
+    return common == 2;
+  };
+  // Opposite triangles around the vertex: neither shares an edge with the other nor with a
+  // common neighbour.
+  std::optional<std::pair<std::size_t, std::size_t>> drop;
+  for (const std::size_t a : around)
+    for (const std::size_t b : around) {
+      if (a >= b || shares_edge(a, b) || drop) continue;
+      const bool common_neighbour = std::any_of(around.begin(), around.end(), [&](std::size_t c) {
+        return c != a && c != b && shares_edge(a, c) && shares_edge(b, c);
+      });
+      if (!common_neighbour) drop = std::pair{a, b};
+    }
+  REQUIRE(drop);
+  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(drop->second));
+  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(drop->first));
+  const Complex pinched = build_complex(s);
+  CHECK(pinched.patch_count() == 1);
+  REQUIRE(pinched.pinches.size() == 1);
+  CHECK(pinched.pinches[0] == std::array<std::uint32_t, 2>{12, 0});
+}
+
 TEST_CASE("user polylines split patches or cut slits") {
   // make_square_sheet(4) numbers its grid vertices j * 5 + i.
   const io::TriangleSoup s = io::make_square_sheet(4);
@@ -202,6 +236,7 @@ TEST_CASE("user polylines split patches or cut slits") {
   CHECK(cut.patch_count() == 1);
   CHECK(test::patch_topologies(cut) == Topologies{{0, 2}});  // a disc with a slit: an annulus
   CHECK(test::complex_problems(cut).empty());
+  CHECK(cut.pinches.empty());  // both sides of a slit share its edges: one fan of the patch
 
   ComplexOptions loop;
   loop.feature_polylines = {{6, 7, 8, 13, 18, 17, 16, 11, 6}};  // a closed square inside
