@@ -15,7 +15,8 @@
 //     turn flat regions into features), or an edge of a user polyline.
 //  4. patches.cpp: patches are the connected components of triangles across non-feature edges;
 //     the cut surface of each (the patch cut open along its features) gives its Euler
-//     characteristic and boundary loop count.
+//     characteristic and boundary loop count; a vertex around which one patch's triangles form
+//     two fans sharing no edge is a pinch (Complex::pinches), which the mesher cannot handle.
 //  5. curves.cpp: corners and curves. A feature vertex is a corner when its feature degree is
 //     not 2, when its curve turns by more than the corner angle, when the patches along its two
 //     feature edges differ (the interior of a curve must see the same patches everywhere, or the
