@@ -35,7 +35,7 @@ void Engine::fail_caps(double radius, const Vec3& where) const {
                   "protection stopped: a ball of radius %.3g at (%.6g, %.6g, %.6g), below the cap of %.3g "
                   "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there?",
                   radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size());
-  throw ProtectionError(message);
+  throw ProtectionError(message, where);
 }
 
 BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {

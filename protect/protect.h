@@ -76,16 +76,23 @@
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "balls.h"
 
 namespace delpsc::protect {
 
-/// Thrown when a safety cap of ProtectOptions is reached; what() says which and how far it got.
+/// Thrown when a safety cap of ProtectOptions is reached; what() says which and how far it got,
+/// where() the centre of the ball that would have passed it (where the model needs balls that
+/// small, for a caller that wants to say why).
 class ProtectionError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  ProtectionError(const std::string& message, const Vec3& where) : std::runtime_error(message), where_(where) {}
+  const Vec3& where() const { return where_; }
+
+ private:
+  Vec3 where_;
 };
 
 struct ProtectOptions {
