@@ -28,7 +28,7 @@ for model in "$dir"/*; do
   value() { sed -n "s/^$1=//p" "$tmp/stdout" | head -n 1; }
   printf '%s\t%s\t%.2f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(basename "$model")" "$code" "$seconds" \
     "$(value vertices)" "$(value disk_condition)" "$(value g1)" "$(value topology_ok)" \
-    "$(value patches_topology_ok)" "$(value min_angle)" "$(grep -v '^\s*$' "$tmp/stderr" | tail -n 1 | cut -c1-300)"
+    "$(value patches_topology_ok)" "$(value min_angle)" "$(grep -v '^\s*$' "$tmp/stderr" | tail -n 1 | cut -c1-800)"
   codes[$code]=$(( ${codes[$code]:-0} + 1 ))
 done
 echo "--- exit codes at --size $size (timeout $limit s):" >&2
