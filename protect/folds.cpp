@@ -1,19 +1,14 @@
 // Folds of the input near a point (protect/folds.h).
 #include "folds.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include <delpsc/kernel/constructions.h>
 
 namespace delpsc::protect {
 
 namespace {
-
-double distance_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (a + t * ab - x).norm();
-}
 
 // Dihedral angle at edge (a, b) between the triangles whose third vertices are c and d.
 double dihedral_degrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
@@ -31,7 +26,7 @@ std::optional<Fold> sharpest_fold_near(const Complex& complex, const Vec3& where
     const auto faces = complex.edge_triangle_ids(e);
     if (faces.size() != 2) continue;
     const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
-    if (distance_to_segment(where, a, b) > radius) continue;
+    if ((kernel::closest_point_on_segment(where, a, b).point - where).norm() > radius) continue;
     Vec3 opposite[2] = {Vec3::Zero(), Vec3::Zero()};
     for (int k = 0; k < 2; ++k)
       for (const std::uint32_t v : complex.triangles[faces[k]])

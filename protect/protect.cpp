@@ -5,9 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <nanoflann.hpp>
+
+#include <delpsc/kernel/constructions.h>
 
 #include "protect_engine.h"
 
@@ -23,23 +27,48 @@ Engine::Engine(BallSet& b, const ProtectOptions& l, ProtectStats& s)
       first_new_id_(static_cast<BallId>(b.id_bound())),
       min_radius_(l.min_radius_fraction * b.diagonal()) {}
 
-void Engine::fail_caps(double radius, const Vec3& where) const {
-  char message[400];
+namespace {
+
+// The nearest point to `where` of a curve other than `curve` (kNoIndex: any curve), at distance
+// above zero (the curves through a corner at `where` do not count): what the caps' message
+// names, the gap that needed balls that small. O(edges); only on failure.
+std::optional<std::pair<std::uint32_t, double>> nearest_other_curve(const Complex& complex, const Vec3& where,
+                                                                    std::uint32_t curve) {
+  std::optional<std::pair<std::uint32_t, double>> best;
+  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+    const std::uint32_t c = complex.edge_curve[e];
+    if (c == kNoIndex || c == curve) continue;
+    const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
+    const double d = (kernel::closest_point_on_segment(where, a, b).point - where).norm();
+    if (d > 0 && (!best || d < best->second)) best = std::pair{c, d};
+  }
+  return best;
+}
+
+}  // namespace
+
+void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) const {
+  char message[520];
   if (balls.size() >= options.max_balls)
     std::snprintf(message, sizeof message,
                   "protection stopped: more than %zu balls (the cap), the last at (%.6g, %.6g, %.6g); curves "
                   "closer together, or meeting at smaller angles, than the size asked for can resolve?",
                   options.max_balls, where.x(), where.y(), where.z());
-  else
+  else {
+    const auto other = nearest_other_curve(complex, where, curve);
+    char gap[120] = "";
+    if (other)
+      std::snprintf(gap, sizeof gap, " (curve %u passes %.3g from it)", other->first, other->second);
     std::snprintf(message, sizeof message,
                   "protection stopped: a ball of radius %.3g at (%.6g, %.6g, %.6g), below the cap of %.3g "
-                  "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there?",
-                  radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size());
+                  "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there%s?",
+                  radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size(), gap);
+  }
   throw ProtectionError(message, where);
 }
 
 BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
-  if (!within_caps(radius)) fail_caps(radius, complex.vertices[complex.corner_vertex[corner]]);
+  if (!within_caps(radius)) fail_caps(radius, complex.vertices[complex.corner_vertex[corner]], kNoIndex);
   const BallId old = balls.corner_ball(corner);
   const BallId id = balls.set_corner_ball(corner, radius);
   if (old != kNoBall && old < first_new_id_) removed_.push_back(old);
@@ -48,7 +77,7 @@ BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
 }
 
 BallId Engine::insert_interior(std::uint32_t curve, BallId after, double s, double radius) {
-  if (!within_caps(radius)) fail_caps(radius, complex.point_at(curve, s));
+  if (!within_caps(radius)) fail_caps(radius, complex.point_at(curve, s), curve);
   const BallId id = balls.insert_interior(curve, after, s, radius);
   created_.push_back(id);
   return id;

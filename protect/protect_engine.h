@@ -34,8 +34,9 @@ class Engine {
   /// Whether a new ball of this radius keeps within the caps; if not, fail_caps says which.
   bool within_caps(double radius) const { return balls.size() < options.max_balls && radius >= min_radius_; }
   /// Throws the ProtectionError for a ball failing within_caps; `where`, its centre, is named
-  /// (where the model needs balls that small).
-  [[noreturn]] void fail_caps(double radius, const Vec3& where) const;
+  /// (where the model needs balls that small), with the nearest other curve than `curve` (the
+  /// ball's, kNoIndex for a corner ball) and how far it passes.
+  [[noreturn]] void fail_caps(double radius, const Vec3& where, std::uint32_t curve) const;
 
   BallId first_new_id_;
   double min_radius_;

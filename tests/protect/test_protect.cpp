@@ -228,6 +228,7 @@ TEST_CASE("protect: the floor for a size stops balls 10^4 times below it, naming
     const std::string what = e.what();
     CHECK(what.find("below the cap") != std::string::npos);
     CHECK(what.find(" at (") != std::string::npos);
+    CHECK(what.find(" passes ") != std::string::npos);  // the nearest other curve, and how far
   }
   CHECK(protect::options_for_size(0.04 * d, d).min_radius_fraction == doctest::Approx(0.04e-4));
   CHECK(protect::options_for_size(1e-12, 1).min_radius_fraction == protect::ProtectOptions{}.min_radius_fraction);
