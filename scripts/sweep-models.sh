@@ -21,12 +21,12 @@ trap 'rm -rf "$tmp"' EXIT
 declare -A codes=()
 for model in "$dir"/*; do
   [ -f "$model" ] || continue
-  start=$(date +%s.%N)
+  start=$(date +%s%N)
   timeout "$limit" "$delpsc" mesh "$model" --size "$size" --check -o "$tmp/out.mesh" >"$tmp/stdout" 2>"$tmp/stderr"
   code=$?
-  seconds=$(echo "$(date +%s.%N) - $start" | bc)
+  ms=$(( ($(date +%s%N) - start) / 1000000 ))
   value() { sed -n "s/^$1=//p" "$tmp/stdout" | head -n 1; }
-  printf '%s\t%s\t%.2f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(basename "$model")" "$code" "$seconds" \
+  printf '%s\t%s\t%d.%02d\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(basename "$model")" "$code" $((ms / 1000)) $((ms % 1000 / 10)) \
     "$(value vertices)" "$(value disk_condition)" "$(value g1)" "$(value topology_ok)" \
     "$(value patches_topology_ok)" "$(value min_angle)" "$(grep -v '^\s*$' "$tmp/stderr" | tail -n 1 | cut -c1-800)"
   codes[$code]=$(( ${codes[$code]:-0} + 1 ))
