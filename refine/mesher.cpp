@@ -365,6 +365,33 @@ bool Mesher::refine_around(PointId p) {
   return true;
 }
 
+// Step 2(a) inserts x for a D3/D4 failure, and the termination proof (Theorem 3.1) bounds x's
+// weighted distance to the offending vertex q below by "no two balls from two different 2-faces
+// intersect": a ball on a curve off σ keeps away from σ. Protect does not ensure that (C1-C3
+// are about curves), and a ball that reaches near σ defeats the bound: each x, power-equidistant
+// from q and two points of σ, comes with a new facet of half its size, a bisection toward the
+// ball's sphere. On libcgal-demo's boeing.off (a ball on a curve 0.19 off a wing tip's plane)
+// 40,000 such insertions piled points 1e-7 apart; boeing and cheese at 1% ran past 90 s (cheese
+// to 1.8 GB and the balls' floor), and a cube under a sheet hovering within λ never ended
+// (test_mesher_features). They now mesh in 1.5, 3 and 0.1 s. So when x's power distance
+// to such a ball q is below q's radius squared (x within √2 radii of its centre), q is the one
+// too large here: refine it, as D1/D2 would with d2 > d1. Balls only shrink, so this happens
+// finitely often (Lemma 3.1's tree), and once q is small next to its distance from σ the
+// insertions of the paper resume.
+BallKey Mesher::ball_reaching_patch(const RestrictedFacet& r) const {
+  BallKey reaching = kNoBallKey;
+  double largest = r.size;
+  for (const PointId v : r.vertices) {
+    if (places_[v].kind != VertexPlace::Kind::ball || disk_.on_patch(v, r.patch)) continue;
+    const double radius = balls_->ball(places_[v].ball).radius;
+    if (radius > largest) {
+      largest = radius;
+      reaching = places_[v].ball;
+    }
+  }
+  return reaching;
+}
+
 std::size_t Mesher::domain_vertex_count() const {
   // While a batch is still below dimension 3 its points wait as pending, frame points included.
   const std::size_t n = dt_.number_of_vertices();
@@ -420,6 +447,9 @@ void Mesher::run() {
       // around p instead.
       if (facets_[v.facet].discarded) {
         if (refine_around(p)) continue;
+      } else if (const BallKey near = ball_reaching_patch(facets_[v.facet]); near != kNoBallKey) {
+        refine_ball(near);
+        continue;
       } else {
         ++stats_.insertions_d34;
         if (insert_surface_point(v.facet)) continue;

@@ -12,7 +12,10 @@
 //       local choice also terminates, but the packing argument of §3 is written for the global
 //       one and is not redone here: max_vertices is the guard. When p has no usable umbrella
 //       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
-//       already proved off V_t (discarded) is handled by the same local step.
+//       already proved off V_t (discarded) is handled by the same local step. A D3/D4 facet
+//       whose point lies within √2 radii of a ball vertex off its patch refines that ball
+//       instead (ball_reaching_patch: the termination proof assumes balls keep away from the
+//       patches their curves do not bound; Protect does not ensure it).
 //   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
 //       > sizing(x) -, facet_distance, facet_angle), insert the point x of a worst one (the
 //       worst eighth of an octave of badness, in Morton order within it: RestrictedFacets::worst);
@@ -162,6 +165,9 @@ class Mesher {
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  // For a D3/D4 facet: a ball vertex off the facet's patch that the facet's point is within
+  // √2 radii of (size(t, σ) < radius), the largest such; kNoBallKey if none.
+  BallKey ball_reaching_patch(const RestrictedFacet& r) const;
   bool sweep_failures();          // re-checks every vertex; true if some fails
   void refine_ball(BallKey key);
   PointId insert_ball(BallKey key);

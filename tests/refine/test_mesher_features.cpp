@@ -182,6 +182,35 @@ TEST_CASE("wedge with a 10 degree edge") {
 }
 TEST_CASE("disc sheet") { mesh_model(io::make_disc_sheet(24, 4), 0.04); }
 
+// A unit cube and, `gap` above its top face, a 3 x 3 open sheet: the balls of the cube's top
+// edges (radius up to λ) reach into the sheet, a patch their curves do not bound.
+static io::TriangleSoup cube_under_sheet(double gap) {
+  io::TriangleSoup soup = io::make_cube(4, 1);
+  Vec3 lo = soup.vertices[0], hi = lo;
+  for (const Vec3& v : soup.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const io::TriangleSoup sheet = io::make_square_sheet(6);
+  const auto first = static_cast<std::uint32_t>(soup.vertices.size());
+  for (const Vec3& v : sheet.vertices) soup.vertices.emplace_back(lo.x() - 1 + 3 * v.x(), lo.y() - 1 + 3 * v.y(), hi.z() + gap);
+  for (const auto& t : sheet.triangles) soup.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  return soup;
+}
+
+TEST_CASE("a ball that reaches a patch its curve does not bound is refined, not bisected toward") {
+  // λ (2% of the diagonal, 0.087) above the gap: D4 fails at the sheet's points joined to a
+  // cube edge's ball, and x, power-equidistant from the ball and two sheet points, came with a
+  // facet of half its size each time, converging on the ball's sphere (the run passed the
+  // vertex cap; with none it never ended). Mesher::ball_reaching_patch refines the ball instead.
+  for (const double gap : {0.05, 0.02}) {
+    CAPTURE(gap);
+    const Outcome out = mesh_model(cube_under_sheet(gap), 0.02);
+    CHECK(out.stats.ball_refinements > 0);
+    CHECK(out.vertices < 10000);
+  }
+}
+
 // Real CAD and scanned models from Debian's libcgal-demo, fetched by scripts/get-cgal-data.sh into
 // data/cgal-demo/ (skipped with a message when absent). G1 and the disk condition at 4% of the
 // diagonal; G2 per patch is not expected at that size (fandisk's thin patches are not resolved).
