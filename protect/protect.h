@@ -33,8 +33,10 @@
 // shrinks the balls along a curve geometrically. Measured on the cube at λ = 4% of the diagonal,
 // 25 refinements of the largest ball: with α = r_σ/4 the 16th passes 200,000 balls (the 13th
 // alone adds 20,000); graded, they add 4 to 24 balls each.
-//   Graded cover (the default): α_max = r_b/4 (r_b the ball's radius, the smallest in a run),
-// and the α of each step of Cover, read where the step leaves seg(b_i), is
+//   Graded cover (the default): α_max = r_b/4 (r_b the ball's radius, the smallest in a run;
+// for a neighbour refined only because its vertex ball shrank, the larger of its radius and the
+// vertex ball's new one, refine_ball.cpp), and the α of each step of Cover, read where the step
+// leaves seg(b_i), is
 //     min(α_max, 0.6 r_1 + 0.1 d_σ(x, s), 0.6 r_2 + 0.1 d_σ(s, y)),
 // small next to a small neighbour and growing along the curve. Why it keeps Lemma 2.4 (the
 // derivation on a straight curve; on a winding one the repair below is the judge):

@@ -4,10 +4,24 @@
 //   interior ball b:     removed with the rest of its run of consecutive marked balls; the gap
 //                        between the run's neighbours b_1, b_2 is covered by
 //                        Cover(x, y, r_σ/4), x the end of seg(b_1), y the start of seg(b_2),
-//                        r_σ the smallest radius among the run, b_1 and b_2.
+//                        r_σ the smallest radius among the run, b_1 and b_2 (the paper's rule;
+//                        the graded cover of protect.h is the default).
 // Every new ball is at most 7/24 of the radius of a ball it replaces (Lemma 2.5).
+//
+// The graded cover's cap α_max is a quarter of the run's own radius for a ball refined for its
+// own sake (larger than λ, or met by a ball of another curve). A neighbour refined only because
+// its vertex ball shrank is not too large itself: it goes so that the gap the shrink opened is
+// covered, and its cap is a quarter of the larger of its radius and the vertex ball's new radius.
+// With its own quarter, every shrink of a vertex ball made the balls next to it four times
+// smaller while the vertex ball only halved: on libcgal-demo's helmet.off (two curves leaving a
+// corner 8.4° apart, balls there ~0.03 of their distance to the corner) three shrinks asked by
+// the disk condition put balls of 3e-6 of the diagonal 0.002 from the corner, below Protect's
+// floor, where the wedge allows ~50 times that. Lemma 2.5 still holds: a new ball is at most
+// 7/6 α_max, i.e. at most 7/24 of the neighbour it replaces or of the vertex ball's radius
+// before the shrink (twice the new one), the root of this refinement.
 // refine_ball (protect.h) is RefineBall of one ball followed by Separate.
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "protect_engine.h"
@@ -19,7 +33,9 @@ namespace detail {
 namespace {
 
 // Refines the run of consecutive marked interior balls that contains `seed`, unmarking them.
-void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked) {
+// `cap[id]` is the graded cover's α_max for a marked ball (the file comment); a run takes the
+// smallest of its balls'.
+void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked, const std::vector<double>& cap) {
   BallSet& balls = engine.balls;
   BallId lo = seed, hi = seed;
   // Balls made by earlier runs of this round have ids past the marks: never marked.
@@ -31,14 +47,16 @@ void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked) {
   const std::uint32_t curve = balls[seed].curve;
   const BallOnCurve left = balls.before(lo), right = balls.after(hi);
   double r_run = balls[lo].radius;  // the smallest radius in the run
+  double alpha_max = cap[lo];
   for (BallId id = lo;; id = balls[id].next) {
     r_run = std::min(r_run, balls[id].radius);
+    alpha_max = std::min(alpha_max, cap[id]);
     if (id == hi) break;
   }
   const double r_left = balls[left.id].radius, r_right = balls[right.id].radius;
   CoverSizes sizes;
   if (engine.options.graded_cover)
-    sizes = graded_cover_sizes(r_run / 4, r_left, r_right);
+    sizes = graded_cover_sizes(alpha_max, r_left, r_right);
   else
     sizes.alpha = std::min({r_run, r_left, r_right}) / 4;  // r_σ / 4
   for (BallId id = lo, stop = balls[hi].next; id != stop;) {
@@ -60,19 +78,27 @@ std::vector<BallId> refine_balls(Engine& engine, std::span<const BallId> to_refi
 
   // Vertex balls first: shrinking one marks its neighbours, which join the runs below.
   std::vector<BallId> interior;
+  std::vector<double> cap(balls.id_bound(), HUGE_VAL);
+  const auto mark_for_shrink = [&](BallId id, double vertex_radius) {
+    if (id == kNoBall) return;
+    interior.push_back(id);
+    cap[id] = std::min(cap[id], std::max(balls[id].radius, vertex_radius) / 4);
+  };
   for (const BallId id : to_refine) {
     if (!balls.alive(id)) continue;  // a duplicate, or a vertex ball already shrunk this round
     const Ball& b = balls[id];
     if (!b.is_corner()) {
       interior.push_back(id);
+      cap[id] = std::min(cap[id], b.radius / 4);
       continue;
     }
     const std::uint32_t corner = b.corner;
-    engine.set_corner_ball(corner, b.radius / 2);
+    const double shrunk = b.radius / 2;
+    engine.set_corner_ball(corner, shrunk);
     ++engine.stats.vertex_shrinks;
     for (const std::uint32_t c : complex.corner_curve_ids(corner)) {
-      if (complex.curves[c].start_corner == corner) interior.push_back(balls.first_interior(c));
-      if (complex.curves[c].end_corner == corner) interior.push_back(balls.last_interior(c));
+      if (complex.curves[c].start_corner == corner) mark_for_shrink(balls.first_interior(c), shrunk);
+      if (complex.curves[c].end_corner == corner) mark_for_shrink(balls.last_interior(c), shrunk);
     }
   }
 
@@ -80,7 +106,7 @@ std::vector<BallId> refine_balls(Engine& engine, std::span<const BallId> to_refi
   for (const BallId id : interior)
     if (id != kNoBall && balls.alive(id)) marked[id] = true;
   for (const BallId id : interior)
-    if (id != kNoBall && marked[id] && balls.alive(id)) refine_run(engine, id, marked);
+    if (id != kNoBall && marked[id] && balls.alive(id)) refine_run(engine, id, marked, cap);
 
   const auto& created = engine.created();
   std::vector<BallId> made;

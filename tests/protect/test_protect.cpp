@@ -256,3 +256,36 @@ TEST_CASE("protect: safety caps end in a ProtectionError, bad arguments in inval
   protect::refine_ball(balls, b);
   CHECK_THROWS_AS(protect::refine_ball(balls, b), std::invalid_argument);
 }
+
+TEST_CASE("refine_ball: shrinking a corner ball between curves 8° apart keeps the balls next to it in proportion") {
+  // libcgal-demo's helmet.off has such a corner (refine_ball.cpp): the disk condition asks for
+  // its ball to shrink a few times, and when every shrink made the neighbouring curve balls four
+  // times smaller, three shrinks reached Protect's floor. The wedge's apex: two legs 8° apart
+  // and the vertical apex edge leave the corner at the origin. Balls at distance d from it need
+  // radii ~0.07 d to keep the legs' balls apart (C3.b), and no smaller.
+  const protect::Complex complex = protect::build_complex(io::make_wedge(8, 0.1));
+  const double lambda = 0.04 * BallSet(complex).diagonal();
+  BallSet balls = protect::protect(complex, lambda);
+  std::uint32_t apex = protect::kNoIndex;
+  for (std::uint32_t k = 0; k < complex.corner_count(); ++k)
+    if (balls[balls.corner_ball(k)].centre.norm() < 1e-12) apex = k;
+  REQUIRE(apex != protect::kNoIndex);
+  for (int step = 0; step < 8; ++step) {
+    CAPTURE(step);
+    protect::refine_ball(balls, balls.corner_ball(apex));
+    const protect::BallCheck check = protect::check_balls(balls);
+    for (const auto& p : check.problems) INFO(p);
+    REQUIRE(check.ok());
+    // The smallest radius relative to the distance from the apex, over the interior balls within
+    // four corner radii of it: what the wedge needs there, not a quarter more per shrink.
+    const double corner_radius = balls[balls.corner_ball(apex)].radius;
+    double least = HUGE_VAL;
+    for (BallId id = 0; id < balls.id_bound(); ++id) {
+      if (!balls.alive(id) || balls[id].is_corner()) continue;
+      const double d = balls[id].centre.norm();
+      if (d < 4 * corner_radius) least = std::min(least, balls[id].radius / d);
+    }
+    MESSAGE("shrink " << step + 1 << ": corner radius " << corner_radius << ", least radius / distance " << least);
+    CHECK(least > 0.01);
+  }
+}
