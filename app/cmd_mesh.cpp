@@ -11,7 +11,6 @@
 #include <delpsc/io/preview_svg.h>
 #include <delpsc/protect/balls.h>
 #include <delpsc/protect/complex.h>
-#include <delpsc/protect/folds.h>
 #include <delpsc/protect/protect.h>
 #include <delpsc/refine/approximation_error.h>
 #include <delpsc/refine/mesh_quality.h>
@@ -22,6 +21,7 @@
 #include <delpsc/refine/skeleton_check.h>
 
 #include "command.h"
+#include "input_defects.h"
 #include "mesh_report.h"
 #include "model_input.h"
 #include "output_paths.h"
@@ -32,11 +32,6 @@
 namespace delpsc::app {
 
 namespace {
-
-// An edge whose triangles are fewer degrees apart than this is named as a fold when refinement
-// fails near it (protect/folds.h). Only a failure names it: the 1° to 10° wedges of the
-// acceptance tests mesh; a scan's flipped triangle, a fold at a fraction of the size, does not.
-constexpr double kFoldDegrees = 15;
 
 struct MeshCommandOptions {
   std::string input;
@@ -107,7 +102,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   try {
     ball_set.emplace(protect::protect(domain.complex(), lambda, ball_options));
   } catch (const protect::ProtectionError& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
+    const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
+    throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
   }
   const double seconds_protect = seconds_since(t_protect);
   phases.emplace_back("protect", seconds_protect);
@@ -132,26 +128,15 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     // Refinement shrinks protecting balls where the disk condition fails near a curve; shrinking
     // past protect's safety cap means the complex cannot be meshed at any size, e.g. part.off at
     // --angle 100, whose 90° creases are then no curves. It ended as an 'internal error', exit 1.
-    // A fold of the input within λ of that ball is named: at a few degrees it is the usual cause
-    // (libcgal-demo's hand.off, 2.1°; mech-holes-shark.off, 8°), and no --angle helps there.
-    char message[900];
-    const auto fold = protect::sharpest_fold_near(domain.complex(), e.where(), lambda, kFoldDegrees);
-    if (fold) {
-      const Vec3& a = domain.complex().vertices[domain.complex().edges[fold->edge][0]];
-      const Vec3& b = domain.complex().vertices[domain.complex().edges[fold->edge][1]];
-      std::snprintf(message, sizeof message,
-                    "%s: refinement needed protecting balls smaller than the model allows (%s); the input folds back "
-                    "on itself there: its two triangles on the edge from (%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g) "
-                    "are %.2g degrees apart - repair the model there",
-                    o.input.c_str(), e.what(), a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), fold->dihedral_degrees);
-    } else {
-      std::snprintf(message, sizeof message,
-                    "%s: refinement needed protecting balls smaller than the model allows (%s); the surface may fold "
-                    "sharply at edges that are no feature curves at --angle %g (a smaller angle makes them curves), "
-                    "or nearly touch itself",
-                    o.input.c_str(), e.what(), o.angle);
-    }
-    throw Failure{kBadInput, message};
+    // A defect of the input within λ of that ball is named (input_defects.h).
+    const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
+    char generic[200];
+    std::snprintf(generic, sizeof generic,
+                  "the surface may fold sharply at edges that are no feature curves at --angle %g (a smaller angle "
+                  "makes them curves), or nearly touch itself",
+                  o.angle);
+    throw Failure{kBadInput, o.input + ": refinement needed protecting balls smaller than the model allows (" +
+                                 e.what() + "); " + (defect.empty() ? std::string(generic) : defect)};
   }
   const double seconds_refine = seconds_since(t_refine);
   phases.emplace_back("refine", seconds_refine);

@@ -9,6 +9,7 @@
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/protect.h>
 
+#include "input_defects.h"
 #include "command.h"
 #include "model_input.h"
 #include "size_limits.h"
@@ -117,7 +118,8 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   try {
     balls.emplace(protect::protect(complex, lambda, protect::options_for_size(lambda, diagonal), &stats));  // as mesh
   } catch (const protect::ProtectionError& e) {
-    throw Failure{kBadInput, o.input + ": " + e.what()};
+    const std::string defect = input_defect_near(complex, e.where(), lambda);
+    throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

@@ -1,8 +1,10 @@
 // Folds of the input near a point (protect/folds.h).
 #include "folds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <delpsc/kernel/constructions.h>
 
@@ -34,6 +36,39 @@ std::optional<Fold> sharpest_fold_near(const Complex& complex, const Vec3& where
     const double angle = dihedral_degrees(a, b, opposite[0], opposite[1]);
     if (angle < below_degrees && (!best || angle < best->dihedral_degrees)) best = Fold{e, angle};
   }
+  return best;
+}
+
+std::optional<NarrowCorner> narrowest_corner_near(const Complex& complex, const Vec3& where, double radius,
+                                                  double below_degrees) {
+  // The corners near `where`, by vertex; then each feature edge at one of them files its unit
+  // direction away from the corner.
+  std::vector<std::uint32_t> corner_of(complex.vertices.size(), kNoIndex);
+  for (std::uint32_t k = 0; k < complex.corner_vertex.size(); ++k)
+    if ((complex.vertices[complex.corner_vertex[k]] - where).norm() <= radius) corner_of[complex.corner_vertex[k]] = k;
+  struct Leaving {
+    std::uint32_t corner, curve;
+    Vec3 direction;
+  };
+  std::vector<Leaving> leaving;
+  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+    if (complex.edge_curve[e] == kNoIndex) continue;
+    for (int end = 0; end < 2; ++end) {
+      const std::uint32_t v = complex.edges[e][end], w = complex.edges[e][1 - end];
+      if (corner_of[v] == kNoIndex) continue;
+      const Vec3 d = complex.vertices[w] - complex.vertices[v];
+      if (d.squaredNorm() > 0) leaving.push_back({corner_of[v], complex.edge_curve[e], d.normalized()});
+    }
+  }
+  std::sort(leaving.begin(), leaving.end(), [](const Leaving& a, const Leaving& b) { return a.corner < b.corner; });
+  std::optional<NarrowCorner> best;
+  for (std::size_t i = 0; i < leaving.size(); ++i)
+    for (std::size_t j = i + 1; j < leaving.size() && leaving[j].corner == leaving[i].corner; ++j) {
+      const Vec3 &a = leaving[i].direction, &b = leaving[j].direction;
+      const double angle = std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / std::numbers::pi;
+      if (angle < below_degrees && (!best || angle < best->angle_degrees))
+        best = NarrowCorner{leaving[i].corner, {leaving[i].curve, leaving[j].curve}, angle};
+    }
   return best;
 }
 

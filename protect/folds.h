@@ -3,7 +3,8 @@
 // principle, but near a fold of angle θ the surface's two sheets are d sin θ apart at distance d
 // from the edge, so the balls and samples there must shrink with θ; at a scanned model's 2° fold
 // refinement reaches balls 10^4 times below the size first (the 'floor' of protect::
-// options_for_size). This names the fold for the message that reports it.
+// options_for_size). This names the fold for the message that reports it, or a corner where two
+// curves leave at a small angle.
 #pragma once
 
 #include <cstdint>
@@ -25,5 +26,20 @@ struct Fold {
 /// Rounded arithmetic: a diagnostic, never a combinatorial decision. O(edges).
 std::optional<Fold> sharpest_fold_near(const Complex& complex, const Vec3& where, double radius,
                                        double below_degrees);
+
+/// Two feature curves leaving a corner at a small angle: a narrow wedge of the surface between
+/// them, or a needle triangle whose edges are all sharp (libcgal-demo's triceratops.off, 5.3°).
+/// Balls along both curves must shrink with the angle near the corner.
+struct NarrowCorner {
+  std::uint32_t corner = kNoIndex;                  ///< index into Complex::corner_vertex
+  std::uint32_t curves[2] = {kNoIndex, kNoIndex};   ///< the two curves (equal for a loop)
+  double angle_degrees = 180;                       ///< between their first edges at the corner
+};
+
+/// Among the corners within `radius` of `where`, the pair of feature edges leaving one of them
+/// at the smallest angle below `below_degrees`, or nullopt. Rounded arithmetic, a diagnostic like
+/// sharpest_fold_near. O(edges + corners).
+std::optional<NarrowCorner> narrowest_corner_near(const Complex& complex, const Vec3& where, double radius,
+                                                  double below_degrees);
 
 }  // namespace delpsc::protect

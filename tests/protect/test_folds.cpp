@@ -1,6 +1,7 @@
-// protect::sharpest_fold_near (protect/folds.h): the edge of a wedge is found with its angle,
-// whatever the triangles' orientation; flat and right-angled edges are no folds; the radius
-// and the angle bound are respected.
+// protect::sharpest_fold_near and narrowest_corner_near (protect/folds.h): a wedge's apex edge
+// and apex corner are found with its angle, whatever the triangles' orientation; flat and
+// right-angled edges and a cube's corners are neither; the radius and the angle bound are
+// respected.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -37,4 +38,25 @@ TEST_CASE("folds: a wedge's apex edges, not the cube's") {
   const auto fold = protect::sharpest_fold_near(f, f.vertices.front(), 100, 15);
   REQUIRE(fold);
   CHECK(fold->dihedral_degrees == doctest::Approx(5).epsilon(1e-6));
+}
+
+TEST_CASE("narrow corners: a wedge's apex, where its legs leave at the wedge's angle; none on a cube") {
+  for (const double angle : {2.0, 5.0, 10.0}) {
+    CAPTURE(angle);
+    const protect::Complex wedge = protect::build_complex(io::make_wedge(angle, 0.1));
+    // The apex corners (0, 0, 0) and (0, 0, 1/2): each cap's two legs leave them `angle` apart.
+    const auto narrow = protect::narrowest_corner_near(wedge, Vec3::Zero(), 0.01, 15);
+    REQUIRE(narrow);
+    CHECK(wedge.vertices[wedge.corner_vertex[narrow->corner]].norm() < 1e-12);
+    CHECK(narrow->curves[0] != narrow->curves[1]);
+    CHECK(narrow->angle_degrees == doctest::Approx(angle).epsilon(1e-6));
+    CHECK_FALSE(protect::narrowest_corner_near(wedge, Vec3::Zero(), 0.01, angle / 2));
+    // The radius is respected: the far corners of the wedge (legs of length 1) are 60°+ wide.
+    CHECK_FALSE(protect::narrowest_corner_near(wedge, Vec3(1, 0, 0), 0.1, 15));
+  }
+  const protect::Complex cube = protect::build_complex(io::make_cube(4));
+  CHECK_FALSE(protect::narrowest_corner_near(cube, Vec3(0.5, 0.5, 0.5), 10, 89));
+  const auto right = protect::narrowest_corner_near(cube, Vec3(0.5, 0.5, 0.5), 10, 91);
+  REQUIRE(right);
+  CHECK(right->angle_degrees == doctest::Approx(90));
 }
