@@ -347,11 +347,18 @@ bool Mesher::refine_around(PointId p) {
       big = places_[q].ball;
     }
   };
+  // d2 for a ball p is its own radius. Taking the largest ball of p's umbrella instead made the
+  // D2 failures of the curve balls next to a corner refine the corner ball each time: on
+  // triceratops.off, at a needle triangle whose ends are 5° wide, the corner ball shrank five
+  // times while the failure followed it inward, to the floor. A ball larger than its facets is
+  // still refined at its own failure, and the unweighted points joined to it still weigh it.
   consider_ball(p);
+  const bool own_ball_only = places_[p].kind == VertexPlace::Kind::ball;
   for (const Incidence& x : facets_.incident(p)) {
     const std::uint32_t slot = x.slot;
     const RestrictedFacet& r = facets_[slot];
-    for (const PointId v : r.vertices) consider_ball(v);
+    if (!own_ball_only)
+      for (const PointId v : r.vertices) consider_ball(v);
     if (r.discarded || r.size <= d1) continue;
     d1 = r.size;
     best = slot;

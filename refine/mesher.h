@@ -5,8 +5,10 @@
 //       the largest ball; else if some vertex fails D3 or D4, insert the point of its offending
 //       umbrella triangle (the x of the termination proof, Theorem 3.1);
 //       With local_disk_refinement (the default), d1 and d2 are taken over p's neighbourhood:
-//       the restricted facets incident to p (all patches) and the balls among p and their
-//       vertices. The paper's global maxima make one persistent local failure (a thin wedge, a
+//       the restricted facets incident to p (all patches) and, for an unweighted p, the balls
+//       among their vertices; for a ball p, its own ball only (a larger ball next to it is
+//       judged at its own vertex and at the unweighted points it is joined to). The paper's
+//       global maxima make one persistent local failure (a thin wedge, a
 //       short curve) refine the whole model down to the size that failure needs. Lemma 2.2
 //       (D1, D2 hold at p once the triangles and balls near p are small enough) suggests the
 //       local choice also terminates, but the packing argument of §3 is written for the global
