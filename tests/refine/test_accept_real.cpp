@@ -35,3 +35,21 @@ TEST_CASE("anchor with facet_distance and facet_angle") {
   if (soup.triangles.empty()) return;
   test::check_acceptance("anchor", soup, 0.005, 300000, {.facet_distance_of_lambda = 0.1, .facet_angle_degrees = 25});
 }
+
+// Models the sweep of all 143 libcgal-demo models failed on before session 15 (BENCHMARKS.md,
+// "Robustness sweep"), each at a size where it failed: helmet at 4% (RefineBall quartering the
+// balls next to a corner at each shrink, to Protect's floor), triceratops at 2% (the local step
+// 2(a) shrinking a corner ball for the D2 failures of the curve balls next to it, to the floor),
+// boeing and cheese at 1% (the D3/D4 bisection toward a ball that reaches another patch: more
+// than 90 s, cheese to 1.8 GB).
+TEST_CASE("models the sweep once failed on: helmet, triceratops, boeing, cheese") {
+  struct Case {
+    const char* name;
+    double size;
+  };
+  for (const Case c : {Case{"helmet", 0.04}, Case{"triceratops", 0.02}, Case{"boeing", 0.01}, Case{"cheese", 0.01}}) {
+    const io::TriangleSoup soup = test::cgal_demo_model(c.name);
+    if (soup.triangles.empty()) continue;
+    test::check_acceptance(c.name, soup, c.size);
+  }
+}
