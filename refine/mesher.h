@@ -8,8 +8,8 @@
 //       the restricted facets incident to p (all patches) and, for an unweighted p, the balls
 //       among their vertices; for a ball p, its own ball only (a larger ball next to it is
 //       judged at its own vertex and at the unweighted points it is joined to). The paper's
-//       global maxima make one persistent local failure (a thin wedge, a
-//       short curve) refine the whole model down to the size that failure needs. Lemma 2.2
+//       global maxima make one persistent local failure (a thin wedge, a short curve) refine
+//       the whole model down to the size that failure needs. Lemma 2.2
 //       (D1, D2 hold at p once the triangles and balls near p are small enough) suggests the
 //       local choice also terminates, but the packing argument of §3 is written for the global
 //       one and is not redone here: max_vertices is the guard. When p has no usable umbrella
