@@ -45,6 +45,56 @@ inline void two_product(double a, double b, double& x, double& y) {
   y = std::fma(a, b, -x);
 }
 
+/// h = e * b for an expansion e of n components (Scale-Expansion with zero elimination); h has
+/// room for 2n and must not alias e. Returns h's length. For fixed-size stack arrays where the
+/// Expansion class's inline buffer would cost more than the arithmetic (predicates.cpp).
+inline std::uint32_t scale_expansion(const double* e, std::uint32_t n, double b, double* h) {
+  if (n == 0 || b == 0) return 0;
+  std::uint32_t len = 0;
+  double q, hh;
+  two_product(e[0], b, q, hh);
+  if (hh != 0) h[len++] = hh;
+  for (std::uint32_t i = 1; i < n; ++i) {
+    double p1, p0, s;
+    two_product(e[i], b, p1, p0);
+    two_sum(q, p0, s, hh);
+    if (hh != 0) h[len++] = hh;
+    fast_two_sum(p1, s, q, hh);
+    if (hh != 0) h[len++] = hh;
+  }
+  if (q != 0) h[len++] = q;
+  return len;
+}
+
+/// h = e + fsign * f (fsign = ±1) for expansions of m and n components: the two merged by
+/// increasing magnitude and accumulated with two_sum, zeros dropped. h has room for m + n and
+/// aliases neither. Returns h's length.
+inline std::uint32_t sum_expansions(const double* e, std::uint32_t m, const double* f, std::uint32_t n,
+                                    double fsign, double* h) {
+  if (m + n == 0) return 0;
+  std::uint32_t ei = 0, fi = 0, len = 0;
+  auto next = [&]() {
+    // e's component first when f is used up, or when (fn > en) == (fn > -en): |en| < |fn|, and
+    // for a tie the order the class always used (the value is the same either way, and so, with
+    // this order, are the components).
+    if (ei < m) {
+      if (fi == n) return e[ei++];
+      const double en = e[ei], fn = fsign * f[fi];
+      if ((fn > en) == (fn > -en)) return e[ei++];
+    }
+    return fsign * f[fi++];
+  };
+  double q = next();
+  for (std::uint32_t k = 1; k < m + n; ++k) {
+    double qnew, hh;
+    two_sum(q, next(), qnew, hh);
+    if (hh != 0) h[len++] = hh;
+    q = qnew;
+  }
+  if (q != 0) h[len++] = q;
+  return len;
+}
+
 /// An exact real number as a nonoverlapping expansion (see the file comment).
 /// Components live inline up to kInline doubles (enough for every predicate on the documented
 /// input range in practice); larger expansions spill to the heap, so correctness never depends
@@ -142,18 +192,7 @@ class Expansion {
     Expansion h;
     if (size_ == 0 || b == 0) return h;
     h.reserve(2 * size_);
-    double q, hh;
-    two_product(data_[0], b, q, hh);
-    if (hh != 0) h.push_unchecked(hh);
-    for (std::uint32_t i = 1; i < size_; ++i) {
-      double p1, p0, s;
-      two_product(data_[i], b, p1, p0);
-      two_sum(q, p0, s, hh);
-      if (hh != 0) h.push_unchecked(hh);
-      fast_two_sum(p1, s, q, hh);
-      if (hh != 0) h.push_unchecked(hh);
-    }
-    if (q != 0) h.push_unchecked(q);
+    h.size_ = scale_expansion(data_, size_, b, h.data_);
     return h;
   }
 
@@ -206,43 +245,7 @@ class Expansion {
 
   // Merges e and ±f by increasing magnitude and accumulates with two_sum, dropping zeros.
   static void merge_sum(const Expansion& e, const Expansion& f, double fsign, Expansion& h) {
-    std::uint32_t ei = 0, fi = 0;
-    double en = e.data_[0], fn = fsign * f.data_[0];
-    auto take = [&](double& out) {
-      if ((fn > en) == (fn > -en)) {  // |en| < |fn| or equal: e's component first
-        out = en;
-        ++ei;
-        if (ei < e.size_) en = e.data_[ei];
-      } else {
-        out = fn;
-        ++fi;
-        if (fi < f.size_) fn = fsign * f.data_[fi];
-      }
-    };
-    auto next = [&](double& out) {
-      if (ei < e.size_ && fi < f.size_) {
-        take(out);
-      } else if (ei < e.size_) {
-        out = en;
-        ++ei;
-        if (ei < e.size_) en = e.data_[ei];
-      } else {
-        out = fn;
-        ++fi;
-        if (fi < f.size_) fn = fsign * f.data_[fi];
-      }
-    };
-    double q;
-    next(q);
-    const std::uint32_t total = e.size_ + f.size_;
-    for (std::uint32_t k = 1; k < total; ++k) {
-      double g, qnew, hh;
-      next(g);
-      two_sum(q, g, qnew, hh);
-      if (hh != 0) h.push_unchecked(hh);
-      q = qnew;
-    }
-    if (q != 0) h.push_unchecked(q);
+    h.size_ = sum_expansions(e.data_, e.size_, f.data_, f.size_, fsign, h.data_);
   }
 
   void reserve(std::uint32_t n) {
