@@ -192,6 +192,10 @@ void clip_coplanar(const PlaneProjection& pr, const Triangle& tri, const Vec3& a
 
 /// The coplanar branch shared by segments (is_ray false, b the end) and rays (b the point that
 /// represents the ray, d the user's direction).
+bool coplanar_meets(const PlaneProjection& pr, const Triangle& tri, const Vec3& a, const Vec3& b) {
+  return a == b ? inside_closed(pr, tri, a.data()) : coplanar_segment_meets(pr, tri, a.data(), b.data());
+}
+
 TriangleHit coplanar_hit(const Vec3& a, const Vec3& b, const Vec3& d, bool is_ray,
                          const Triangle& tri) {
   TriangleHit hit;
@@ -201,9 +205,7 @@ TriangleHit coplanar_hit(const Vec3& a, const Vec3& b, const Vec3& d, bool is_ra
     return hit;
   }
   const bool point_like = !is_ray && a == b;
-  const bool meets = point_like ? inside_closed(pr, tri, a.data())
-                     : is_ray   ? coplanar_ray_meets(pr, tri, a.data(), b.data())
-                                : coplanar_segment_meets(pr, tri, a.data(), b.data());
+  const bool meets = is_ray ? coplanar_ray_meets(pr, tri, a.data(), b.data()) : coplanar_meets(pr, tri, a, b);
   if (!meets) return hit;
   hit.contact = Contact::coplanar;
   double lo = 0, hi = is_ray ? std::numeric_limits<double>::infinity() : 1.0;
@@ -297,6 +299,13 @@ TriangleHit intersect_segment_triangle(const Vec3& a, const Vec3& b, const Vec3&
   hit.t_exit = hit.t;
   hit.point = snap_to_feature(x, tri, hit.feature);
   return hit;
+}
+
+bool coplanar_segment_meets_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1,
+                                     const Vec3& t2) {
+  const Triangle tri{{&t0, &t1, &t2}};
+  const PlaneProjection pr = projection_for(tri);
+  return pr.sign != 0 && coplanar_meets(pr, tri, a, b);
 }
 
 Vec3 ray_through_point(const Vec3& origin, const Vec3& direction) {

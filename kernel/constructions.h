@@ -150,6 +150,14 @@ struct TriangleHit {
 TriangleHit intersect_segment_triangle(const Vec3& a, const Vec3& b, const Vec3& t0,
                                        const Vec3& t1, const Vec3& t2);
 
+/// Whether the closed segment [a, b] meets the closed triangle (t0, t1, t2) when the caller knows
+/// all five points to be coplanar (orient3d zero): the decision intersect_segment_triangle makes
+/// in that case, without its two orient3d, which are exactly zero and so always reach exact
+/// arithmetic. Exact (orient2d on the projection the triangle's normal picks); false for a
+/// degenerate triangle. Unspecified when the points are not coplanar.
+bool coplanar_segment_meets_triangle(const Vec3& a, const Vec3& b, const Vec3& t0, const Vec3& t1,
+                                     const Vec3& t2);
+
 /// Intersection of the ray {origin + t direction, t >= 0} with the closed triangle.
 ///
 /// Precondition: direction != 0. The ray is classified exactly as the ray from origin through the

@@ -10,13 +10,28 @@ namespace delpsc::protect {
 
 namespace {
 
-bool segment_meets(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t) {
-  return static_cast<bool>(kernel::intersect_segment_triangle(p, q, t[0], t[1], t[2]));
+bool segment_meets(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t, bool coplanar) {
+  return coplanar ? kernel::coplanar_segment_meets_triangle(p, q, t[0], t[1], t[2])
+                  : static_cast<bool>(kernel::intersect_segment_triangle(p, q, t[0], t[1], t[2]));
 }
 
 /// Does edge k of x (opposite its vertex k) meet the closed triangle y?
-bool opposite_edge_meets(const std::array<Vec3, 3>& x, int k, const std::array<Vec3, 3>& y) {
-  return segment_meets(x[(k + 1) % 3], x[(k + 2) % 3], y);
+bool opposite_edge_meets(const std::array<Vec3, 3>& x, int k, const std::array<Vec3, 3>& y, bool coplanar) {
+  return segment_meets(x[(k + 1) % 3], x[(k + 2) % 3], y, coplanar);
+}
+
+enum class Sides { one_side, coplanar, other };
+
+/// Where the vertices of y from `first` on (cyclically, `count` of them) lie against x's plane:
+/// all strictly on one side, all on it, or otherwise. A degenerate x (collinear corners, which
+/// the complex leaves out) has no plane: `other`, so that the callers take the general tests.
+/// Exact.
+Sides sides(const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y, int first, int count) {
+  const int side = kernel::orient3d(x[0], x[1], x[2], y[first]);
+  for (int k = 1; k < count; ++k)
+    if (kernel::orient3d(x[0], x[1], x[2], y[(first + k) % 3]) != side) return Sides::other;
+  if (side != 0) return Sides::one_side;
+  return kernel::collinear(x[0].data(), x[1].data(), x[2].data()) ? Sides::other : Sides::coplanar;
 }
 
 }  // namespace
@@ -32,19 +47,33 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
         ++shared;
       }
   switch (shared) {
-    case 0:
+    case 0: {
+      // One triangle strictly on one side of the other's plane: disjoint. Three orient3d each
+      // way settle most pairs whose boxes overlap, before the six edge tests below; b in a's
+      // plane makes them coplanar, tested in that plane without orient3d's exact zeros.
+      const Sides b_to_a = sides(a, b, 0, 3);
+      if (b_to_a == Sides::one_side || (b_to_a == Sides::other && sides(b, a, 0, 3) == Sides::one_side)) return false;
+      const bool coplanar = b_to_a == Sides::coplanar;
       // Two closed triangles meet iff an edge of one meets the other: a non-empty intersection
       // is convex, and a point of it extreme along any line lies on an edge of one of them.
       for (int k = 0; k < 3; ++k)
-        if (opposite_edge_meets(a, k, b) || opposite_edge_meets(b, k, a)) return true;
+        if (opposite_edge_meets(a, k, b, coplanar) || opposite_edge_meets(b, k, a, coplanar)) return true;
       return false;
+    }
     case 1: {
       // Sharing vertex v: if they also share p != v, follow the ray from v through p until it
       // leaves one of them, say a, at x. x is in b, and it lies on a's edge opposite v (when the
       // ray runs along an edge of a through v, x is that edge's far vertex, also on the opposite
       // edge). The converse holds since v is on neither opposite edge.
       const int i = static_cast<int>(std::find_if(in_b.begin(), in_b.end(), [](int j) { return j >= 0; }) - in_b.begin());
-      return opposite_edge_meets(a, i, b) || opposite_edge_meets(b, in_b[i], a);
+      // b's other two vertices strictly on one side of a's plane: b meets that plane only at v,
+      // so the triangles meet only there (the usual case between neighbours of a curved surface).
+      // Both on it: the two are coplanar (the flat regions of CAD models).
+      const int j = in_b[i];
+      const Sides b_to_a = sides(a, b, (j + 1) % 3, 2);
+      if (b_to_a == Sides::one_side) return false;
+      const bool coplanar = b_to_a == Sides::coplanar;
+      return opposite_edge_meets(a, i, b, coplanar) || opposite_edge_meets(b, j, a, coplanar);
     }
     case 2: {
       // Sharing edge uv: in different planes they meet exactly in uv; in one plane they overlap
