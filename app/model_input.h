@@ -78,8 +78,8 @@ inline void reject_near_contact(const protect::Complex& complex, const kernel::A
 /// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
 /// it hit a cap or ran out of memory. The message names the first pair and where it is.
-inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
-  const kernel::AabbTree tree(complex.vertices, complex.triangles);  // one tree for both checks
+inline void reject_self_intersections(const protect::Complex& complex, const kernel::AabbTree& tree,
+                                      const std::string& path) {
   const auto pairs = protect::find_self_intersections(complex, tree, kSelfIntersectionsCounted);
   if (pairs.empty()) return reject_near_contact(complex, tree, path);
   const auto [s, t] = pairs.front();
@@ -94,6 +94,11 @@ inline void reject_self_intersections(const protect::Complex& complex, const std
                 path.c_str(), complex.triangle_source[s], complex.triangle_source[t], c.x(), c.y(), c.z(),
                 pairs.size() == kSelfIntersectionsCounted ? "at least " : "", pairs.size());
   throw Failure{kBadInput, message};
+}
+
+/// The same with a tree of its own (one tree for both checks); `delpsc mesh` passes its domain's.
+inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
+  reject_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), path);
 }
 
 /// A bad-input exit when a patch touches itself only at a vertex (protect::Complex::pinches):

@@ -2,8 +2,9 @@
 // output, CPU time) at λ = 0.5% of the diagonal, started from the initial sample (the default)
 // and from the balls alone (the paper's start, MesherOptions::initial_sample = false); and the
 // initial sample's own parts: the domain's candidates and their selection; the whole pipeline
-// at 2% (pipeline/), where the costs per input triangle weigh; and the output's orientation
-// (orient/). Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
+// at 2% (pipeline/), where the costs per input triangle weigh; the output's orientation
+// (orient/); and the input checks `delpsc mesh` runs before meshing (input_checks/: the tree,
+// crossing triangles, near contacts), which the pipeline leaves out. Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
 // models.
 //   cmake --build build --target bench_mesher && build/bin/bench_mesher
 #include <benchmark/benchmark.h>
@@ -19,6 +20,7 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/protect.h>
+#include <delpsc/protect/self_intersections.h>
 #include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
@@ -155,6 +157,20 @@ void orient(benchmark::State& state, const Model& m) {
   state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
 }
 
+// What app/model_input.h's reject_self_intersections does on a clean model: one tree, then both
+// checks (nothing is found, so every box-overlapping pair is decided). The tolerance is the
+// command's, 1e-9 of the diagonal.
+void input_checks(benchmark::State& state, const Model& m) {
+  const protect::Complex& complex = m.domain->complex();
+  const double tolerance = 1e-9 * m.domain->bounding_box().diagonal();
+  for (auto _ : state) {
+    const kernel::AabbTree tree(complex.vertices, complex.triangles);
+    benchmark::DoNotOptimize(protect::find_self_intersections(complex, tree, 100));
+    benchmark::DoNotOptimize(protect::find_near_contact(complex, tree, tolerance));
+  }
+  state.counters["triangles"] = static_cast<double>(complex.triangles.size());
+}
+
 const int registered = [] {
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
@@ -163,6 +179,7 @@ const int registered = [] {
     benchmark::RegisterBenchmark(("candidates/" + m.name + "/2%").c_str(), candidates, m, 4.0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("pipeline/" + m.name + "/2%").c_str(), pipeline, m, 0.02)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("orient/" + m.name).c_str(), orient, m)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("input_checks/" + m.name).c_str(), input_checks, m)->Unit(benchmark::kMillisecond);
   }
   return 0;
 }();
