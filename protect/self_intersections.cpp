@@ -67,11 +67,13 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
       // edge). The converse holds since v is on neither opposite edge.
       const int i = static_cast<int>(std::find_if(in_b.begin(), in_b.end(), [](int j) { return j >= 0; }) - in_b.begin());
       // b's other two vertices strictly on one side of a's plane: b meets that plane only at v,
-      // so the triangles meet only there (the usual case between neighbours of a curved surface).
-      // Both on it: the two are coplanar (the flat regions of CAD models).
+      // so the triangles meet only there (the usual case between neighbours of a curved surface);
+      // likewise with a and b swapped. Both on it: the two are coplanar (the flat regions of CAD
+      // models).
       const int j = in_b[i];
       const Sides b_to_a = sides(a, b, (j + 1) % 3, 2);
-      if (b_to_a == Sides::one_side) return false;
+      if (b_to_a == Sides::one_side || (b_to_a == Sides::other && sides(b, a, (i + 1) % 3, 2) == Sides::one_side))
+        return false;
       const bool coplanar = b_to_a == Sides::coplanar;
       return opposite_edge_meets(a, i, b, coplanar) || opposite_edge_meets(b, j, a, coplanar);
     }
