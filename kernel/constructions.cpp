@@ -190,12 +190,13 @@ void clip_coplanar(const PlaneProjection& pr, const Triangle& tri, const Vec3& a
   if (lo > hi) lo = hi = 0.5 * (lo + hi);
 }
 
-/// The coplanar branch shared by segments (is_ray false, b the end) and rays (b the point that
-/// represents the ray, d the user's direction).
+/// Whether the coplanar segment [a, b] (a point when a == b) meets the closed triangle.
 bool coplanar_meets(const PlaneProjection& pr, const Triangle& tri, const Vec3& a, const Vec3& b) {
   return a == b ? inside_closed(pr, tri, a.data()) : coplanar_segment_meets(pr, tri, a.data(), b.data());
 }
 
+/// The coplanar branch shared by segments (is_ray false, b the end) and rays (b the point that
+/// represents the ray, d the user's direction).
 TriangleHit coplanar_hit(const Vec3& a, const Vec3& b, const Vec3& d, bool is_ray,
                          const Triangle& tri) {
   TriangleHit hit;

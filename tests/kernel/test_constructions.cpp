@@ -248,6 +248,28 @@ TEST_CASE("segment-triangle: each kind of contact, with the right feature") {
   CHECK_FALSE(flat);
 }
 
+TEST_CASE("coplanar segment-triangle: the same decision as intersect_segment_triangle, without orient3d") {
+  // Points of a small integer grid on a tilted plane (o + u e1 + v e2, all integers, so exactly
+  // coplanar): many segments touch a vertex or run along an edge.
+  Rng rng(7);
+  const Vec3 o(3, -2, 5), e1(1, 2, -1), e2(-2, 1, 3);
+  const auto grid_point = [&] {
+    return Vec3(o + static_cast<double>(rng.integer(-3, 3)) * e1 + static_cast<double>(rng.integer(-3, 3)) * e2);
+  };
+  int meets = 0, misses = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vec3 a = grid_point(), b = rng.chance(0.1) ? a : grid_point();
+    const Vec3 t0 = grid_point(), t1 = grid_point(), t2 = grid_point();
+    const bool expected = static_cast<bool>(intersect_segment_triangle(a, b, t0, t1, t2));
+    CHECK(coplanar_segment_meets_triangle(a, b, t0, t1, t2) == expected);
+    (expected ? meets : misses) += 1;
+  }
+  CHECK(meets > 1000);  // both answers well represented
+  CHECK(misses > 1000);
+  // A degenerate triangle decides nothing, as intersect_segment_triangle reports.
+  CHECK_FALSE(coplanar_segment_meets_triangle(o, o + e1, o - e1, o + 2 * e1, o + 3 * e1));
+}
+
 TEST_CASE("ray-triangle: direction, origin on the triangle, parallel and coplanar rays") {
   TriangleHit h = ray({1, 1, -1}, {0, 0, 1});
   CHECK(h.contact == Contact::crossing);
