@@ -12,6 +12,7 @@
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
 
+#include "edge_record_sort.h"
 #include "triangle_samples.h"
 
 namespace delpsc::refine {
@@ -31,12 +32,14 @@ std::vector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<const Triang
   };
   std::vector<HalfEdge> half;
   half.reserve(3 * triangles.size());
+  std::uint32_t vertex_bound = 0;
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (std::uint32_t k = 0; k < 3; ++k) {
       const std::uint32_t u = triangles[t][(k + 1) % 3], v = triangles[t][(k + 2) % 3];
       if (u != v) half.push_back({std::min(u, v), std::max(u, v), t, k});
+      vertex_bound = std::max({vertex_bound, u + 1, v + 1});
     }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+  sort_edge_records(half, vertex_bound, [](const HalfEdge& x, const HalfEdge& y) {
     return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.triangle < y.triangle;
   });
   std::vector<std::array<std::uint32_t, 3>> out(triangles.size(), {kNone, kNone, kNone});

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "edge_record_sort.h"
+
 namespace delpsc::refine {
 
 namespace {
@@ -82,8 +84,7 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
       vertex_bound = std::max(vertex_bound, a + 1);
     }
   }
-  std::sort(uses.begin(), uses.end(),
-            [](const EdgeUse& x, const EdgeUse& y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
+  sort_edge_records(uses, vertex_bound, [](const EdgeUse& x, const EdgeUse& y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
 
   UnionFind vertices(vertex_bound);  // components: every triangle joins its vertices
   for (const auto& v : triangles) vertices.join(v[0], v[1]), vertices.join(v[1], v[2]);

@@ -2,9 +2,11 @@
 // triangle, a tetrahedron (also with a triangle turned over: orientability does not depend on the
 // orientation given), a Möbius strip against an annulus, two tetrahedra pinched at a vertex, a
 // book of three triangles, the generated box with a fin and the torus; and topology_differences
-// naming exactly the figures that differ.
+// naming exactly the figures that differ; and sort_edge_records, which both grouping steps use,
+// against std::sort.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -13,6 +15,9 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/refine/complex_topology.h>
+#include <delpsc/refine/edge_record_sort.h>
+
+#include "support/generators.h"
 
 using namespace delpsc;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
@@ -136,4 +141,34 @@ TEST_CASE("generated models") {
 TEST_CASE("a triangle repeating a vertex is refused") {
   const Triangles bad{{0, 1, 1}};
   CHECK_THROWS_AS(refine::complex_topology(bad), std::invalid_argument);
+}
+
+TEST_CASE("sort_edge_records orders as std::sort with the same total order") {
+  struct Record {
+    std::uint32_t lo, hi, triangle;
+  };
+  const auto less = [](const Record& x, const Record& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.triangle < y.triangle;
+  };
+  delpsc::test::Rng rng(3);
+  for (const std::uint32_t vertices : {1u, 7u, 1000u}) {
+    std::vector<Record> records;
+    for (std::uint32_t t = 0; t < 5000; ++t) {
+      const auto a = static_cast<std::uint32_t>(rng.integer(0, vertices - 1));
+      const auto b = static_cast<std::uint32_t>(rng.integer(0, vertices - 1));
+      records.push_back({std::min(a, b), std::max(a, b), t});
+    }
+    std::vector<Record> expected = records;
+    std::sort(expected.begin(), expected.end(), less);
+    refine::sort_edge_records(records, vertices, less);
+    REQUIRE(records.size() == expected.size());
+    bool same = true;
+    for (std::size_t i = 0; i < records.size(); ++i)
+      same = same && records[i].lo == expected[i].lo && records[i].hi == expected[i].hi &&
+             records[i].triangle == expected[i].triangle;
+    CHECK(same);
+  }
+  std::vector<Record> none;
+  refine::sort_edge_records(none, 0, less);
+  CHECK(none.empty());
 }
