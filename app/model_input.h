@@ -57,31 +57,35 @@ inline constexpr double kNearContactFraction = 1e-9;
 /// A bad-input exit when a vertex comes within kNearContactFraction of the diagonal of a triangle
 /// it is no corner of (protect::find_near_contact): refinement would have to sample at that
 /// scale, and ran for minutes towards the vertex cap on a tetrahedron 1e-15 thick.
-inline void reject_near_contact(const protect::Complex& complex, const kernel::AabbTree& tree, const std::string& path) {
-  kernel::Box3 box;
-  for (const Vec3& p : complex.vertices) box.extend(p);
-  const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
-  const auto pair = protect::find_near_contact(complex, tree, tolerance);
-  if (!pair) return;
-  const Vec3& p = complex.vertices[(*pair)[0]];
+inline void reject_near_contact(const protect::Complex& complex, const std::array<std::uint32_t, 2>& pair,
+                                double tolerance, const std::string& path) {
+  const Vec3& p = complex.vertices[pair[0]];
   char message[512];
   std::snprintf(message, sizeof message,
                 "%s: the model nearly touches itself: vertex %u (%.9g, %.9g, %.9g) lies within %.3g (%g of the "
                 "diagonal) of triangle %u, not one of its own (counted after splitting polygons); DelPSC would have "
                 "to sample the surface at that scale - weld or separate them",
-                path.c_str(), (*pair)[0], p.x(), p.y(), p.z(), tolerance, kNearContactFraction,
-                complex.triangle_source[(*pair)[1]]);
+                path.c_str(), pair[0], p.x(), p.y(), p.z(), tolerance, kNearContactFraction,
+                complex.triangle_source[pair[1]]);
   throw Failure{kBadInput, message};
 }
 
 /// A bad-input exit when two triangles of the complex cross or overlap other than along a shared
 /// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
-/// it hit a cap or ran out of memory. The message names the first pair and where it is.
+/// it hit a cap or ran out of memory. The message names the first pair and where it is. Then the
+/// near contacts (reject_near_contact), found in the same descent of `tree`.
 inline void reject_self_intersections(const protect::Complex& complex, const kernel::AabbTree& tree,
                                       const std::string& path) {
-  const auto pairs = protect::find_self_intersections(complex, tree, kSelfIntersectionsCounted);
-  if (pairs.empty()) return reject_near_contact(complex, tree, path);
+  kernel::Box3 box;
+  for (const Vec3& p : complex.vertices) box.extend(p);
+  const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
+  const protect::InputDefects defects = protect::find_input_defects(complex, tree, kSelfIntersectionsCounted, tolerance);
+  const auto& pairs = defects.crossing;
+  if (pairs.empty()) {
+    if (defects.near_contact) reject_near_contact(complex, *defects.near_contact, tolerance, path);
+    return;
+  }
   const auto [s, t] = pairs.front();
   Vec3 c = Vec3::Zero();
   for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;

@@ -49,16 +49,15 @@ void BM_BuildAabbTree(benchmark::State& state) {
 BENCHMARK(BM_BuildAabbTree)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 // The input checks every command that meshes runs (protect/self_intersections.h) on a clean
-// surface, where nothing is found and every box-overlapping pair is decided: the tree, then the
-// exact pair tests, then the near-contact search. Against BM_BuildComplexTorus: what the checks
-// add to reading a model.
+// surface, where nothing is found and every box-overlapping pair is decided: the tree, then one
+// descent of it for the exact pair tests and the near-contact search (find_input_defects, as
+// the commands do). Against BM_BuildComplexTorus: what the checks add to reading a model.
 void BM_InputChecksTorus(benchmark::State& state) {
   const auto nu = static_cast<int>(state.range(0));
   const protect::Complex complex = protect::build_complex(torus_soup(nu, nu / 2));
   for (auto _ : state) {
     const kernel::AabbTree tree(complex.vertices, complex.triangles);
-    benchmark::DoNotOptimize(protect::find_self_intersections(complex, tree, 100));
-    benchmark::DoNotOptimize(protect::find_near_contact(complex, tree, 1e-9 * 2.6));
+    benchmark::DoNotOptimize(protect::find_input_defects(complex, tree, 100, 1e-9 * 2.6));
   }
   state.counters["triangles"] = static_cast<double>(complex.triangles.size());
   state.counters["tri/s"] = benchmark::Counter(static_cast<double>(complex.triangles.size()), benchmark::Counter::kIsIterationInvariantRate);

@@ -158,15 +158,14 @@ void orient(benchmark::State& state, const Model& m) {
 }
 
 // What app/model_input.h's reject_self_intersections does on a clean model: one tree, then both
-// checks (nothing is found, so every box-overlapping pair is decided). The tolerance is the
+// checks in one descent of it (nothing is found, so every box-overlapping pair is decided). The tolerance is the
 // command's, 1e-9 of the diagonal.
 void input_checks(benchmark::State& state, const Model& m) {
   const protect::Complex& complex = m.domain->complex();
   const double tolerance = 1e-9 * m.domain->bounding_box().diagonal();
   for (auto _ : state) {
     const kernel::AabbTree tree(complex.vertices, complex.triangles);
-    benchmark::DoNotOptimize(protect::find_self_intersections(complex, tree, 100));
-    benchmark::DoNotOptimize(protect::find_near_contact(complex, tree, tolerance));
+    benchmark::DoNotOptimize(protect::find_input_defects(complex, tree, 100, tolerance));
   }
   state.counters["triangles"] = static_cast<double>(complex.triangles.size());
 }

@@ -403,8 +403,17 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
   }
 }
 
-void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f) const {
+void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f,
+                                         double margin) const {
   if (nodes_.empty()) return;
+  // Two boxes each grown by the margin overlap iff one overlaps the other grown by twice it.
+  const Vec3 grow = Vec3::Constant(margin), grow2 = Vec3::Constant(2 * margin);
+  const auto node_box = [&](std::uint32_t i) {
+    Box3 b = nodes_[i].box();
+    b.lo -= grow2;
+    b.hi += grow2;
+    return b;
+  };
   const auto is_leaf = [&](std::uint32_t i) { return nodes_[i].count > 0; };
   const auto children = [&](std::uint32_t i) { return std::array<std::uint32_t, 2>{i + 1, nodes_[i].first_or_right}; };
   // Pairs of nodes whose boxes overlap (a node paired with itself stands for the pairs inside it).
@@ -412,7 +421,11 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
   // Each triangle's box once, in slot order: a leaf meets ~10 others, and recomputing its boxes
   // from the corners at each meeting was a seventh of the check on a million triangles.
   std::vector<Box3> slot_box(slots_.size());
-  for (std::size_t s = 0; s < slots_.size(); ++s) slot_box[s] = triangle_box(slots_[s].corners);
+  for (std::size_t s = 0; s < slots_.size(); ++s) {
+    slot_box[s] = triangle_box(slots_[s].corners);
+    slot_box[s].lo -= grow;
+    slot_box[s].hi += grow;
+  }
   const Box3* const boxes_of = slot_box.data();
   while (!stack.empty()) {
     const auto [i, j] = stack.back();
@@ -429,7 +442,7 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
       const auto [l, r] = children(i);
       stack.push_back({l, l});
       stack.push_back({r, r});
-      if (nodes_[l].box().overlaps(nodes_[r].box())) stack.push_back({l, r});
+      if (nodes_[l].box().overlaps(node_box(r))) stack.push_back({l, r});
       continue;
     }
     if (is_leaf(i) && is_leaf(j)) {
@@ -443,7 +456,7 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
     // Descend the inner node (the larger one when both are): its children against the other.
     const bool split_a = is_leaf(j) || (!is_leaf(i) && a.box().diagonal() >= b.box().diagonal());
     const std::uint32_t split = split_a ? i : j, other = split_a ? j : i;
-    const Box3 other_box = nodes_[other].box();
+    const Box3 other_box = node_box(other);
     for (const std::uint32_t c : children(split))
       if (nodes_[c].box().overlaps(other_box)) stack.push_back({c, other});
   }

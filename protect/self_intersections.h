@@ -43,11 +43,24 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
 /// below `tolerance` but not 0 (touching is a self-intersection above), or nullopt: a surface
 /// that comes that close to itself has a feature that small, which refinement resolves only by
 /// sampling at that scale (a tetrahedron 1e-15 thick refined for minutes towards the vertex
-/// cap). The first such pair by vertex. Distances in floating point (closest_point_on_triangle);
-/// the AABB tree finds the triangles within `tolerance` of each vertex.
+/// cap). The smallest such (vertex, triangle) pair. Distances in floating point
+/// (closest_point_on_triangle); the AABB tree pairs each triangle with those within about
+/// `tolerance` of it.
 std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, double tolerance);
 /// The same with a tree built by the caller, as for find_self_intersections.
 std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& complex, const kernel::AabbTree& tree,
                                                                double tolerance);
+
+/// Both checks above from one descent of `tree` (an AabbTree over complex.vertices and
+/// complex.triangles): `crossing` is find_self_intersections(complex, tree, max_pairs) and
+/// `near_contact` find_near_contact(complex, tree, tolerance). max_pairs 0 skips the first,
+/// a tolerance that is not positive the second. Cost as find_self_intersections, the pairs
+/// found with boxes grown by the tolerance.
+struct InputDefects {
+  std::vector<std::array<std::uint32_t, 2>> crossing;
+  std::optional<std::array<std::uint32_t, 2>> near_contact;
+};
+InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& tree, std::size_t max_pairs,
+                                double tolerance);
 
 }  // namespace delpsc::protect

@@ -318,20 +318,26 @@ TEST_CASE("box query equals brute force on bounding boxes") {
 }
 
 TEST_CASE("overlapping pairs equal brute force, each pair once") {
-  const auto check = [](const Soup& s) {
+  // margin: each box grown by it (the brute force grows them the same way, in double).
+  const auto check = [](const Soup& s, double margin = 0) {
     const AabbTree tree(s.vertices, s.triangles);
     std::vector<std::array<std::uint32_t, 2>> got;
-    tree.for_each_overlapping_pair([&](std::uint32_t a, std::uint32_t b) {
-      CHECK(a != b);
-      got.push_back({std::min(a, b), std::max(a, b)});
-    });
+    tree.for_each_overlapping_pair(
+        [&](std::uint32_t a, std::uint32_t b) {
+          CHECK(a != b);
+          got.push_back({std::min(a, b), std::max(a, b)});
+        },
+        margin);
     const std::size_t reported = got.size();
     std::sort(got.begin(), got.end());
     got.erase(std::unique(got.begin(), got.end()), got.end());
     CHECK(got.size() == reported);  // no pair twice
     std::vector<Box3> boxes(s.triangles.size());
-    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       for (auto v : s.triangles[t]) boxes[t].extend(s.vertices[v]);
+      boxes[t].lo -= Vec3::Constant(margin);
+      boxes[t].hi += Vec3::Constant(margin);
+    }
     std::vector<std::array<std::uint32_t, 2>> want;
     for (std::uint32_t a = 0; a < boxes.size(); ++a)
       for (std::uint32_t b = a + 1; b < boxes.size(); ++b)
@@ -345,4 +351,9 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
   CHECK(check(grid_soup(20)) > 0);  // boxes touching along grid lines count: closed boxes
   const Soup one = random_soup(rng, 1, 0.1);
   CHECK(check(one) == 0);
+  // Grown boxes pair triangles up to twice the margin apart: more pairs, still exactly those.
+  const Soup spread = random_soup(rng, 1500, 0.02);
+  const std::size_t touching = check(spread);
+  CHECK(check(spread, 0.01) > touching + 100);
+  CHECK(check(grid_soup(20), 0.6) > check(grid_soup(20)));  // the next ring, 1 apart
 }

@@ -7,12 +7,16 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <random>
 
 #include <delpsc/io/read_model.h>
 #include <delpsc/io/sample_part.h>
 #include <delpsc/io/shapes.h>
+#include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/constructions.h>
 #include <delpsc/protect/self_intersections.h>
 
 using namespace delpsc;
@@ -136,4 +140,45 @@ TEST_CASE("a cube with a sheet through it: every crossing pair found, and the ca
   const auto capped = protect::find_self_intersections(complex, 5);
   REQUIRE(capped.size() == 5);
   CHECK(std::equal(capped.begin(), capped.end(), pairs.begin()));
+}
+
+TEST_CASE("near contacts: the smallest (vertex, triangle) pair within the tolerance, as brute force finds it") {
+  // Random small triangles in the unit cube (they also cross: find_input_defects reports both
+  // kinds from one descent, each as its own function does). Brute force: every used vertex
+  // against every triangle it is no corner of, in order, with the same closest-point distance.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1), small(-0.04, 0.04);
+  io::TriangleSoup soup;
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const auto base = static_cast<std::uint32_t>(soup.vertices.size());
+    for (int k = 0; k < 3; ++k) soup.vertices.push_back(c + Vec3(small(rng), small(rng), small(rng)));
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  const protect::Complex complex = protect::build_complex(soup);
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  for (const double tolerance : {2e-3, 1e-2, 3e-2}) {
+    CAPTURE(tolerance);
+    std::optional<std::array<std::uint32_t, 2>> want;
+    for (std::uint32_t v = 0; v < complex.vertices.size() && !want; ++v)
+      for (std::uint32_t t = 0; t < complex.triangles.size() && !want; ++t) {
+        const auto& tri = complex.triangles[t];
+        if (tri[0] == v || tri[1] == v || tri[2] == v) continue;
+        const Vec3& p = complex.vertices[v];
+        const double d2 = (p - kernel::closest_point_on_triangle(p, complex.vertices[tri[0]], complex.vertices[tri[1]],
+                                                                 complex.vertices[tri[2]]).point).squaredNorm();
+        if (d2 > 0 && d2 < tolerance * tolerance) want = std::array<std::uint32_t, 2>{v, t};
+      }
+    REQUIRE(want);  // each tolerance finds some: the test means something
+    CHECK(protect::find_near_contact(complex, tree, tolerance) == want);
+    const protect::InputDefects both = protect::find_input_defects(complex, tree, 50, tolerance);
+    CHECK(both.near_contact == want);
+    CHECK(both.crossing == protect::find_self_intersections(complex, 50));
+    CHECK(!both.crossing.empty());
+  }
+  CHECK_FALSE(protect::find_near_contact(complex, tree, 0));
+  CHECK_FALSE(protect::find_near_contact(complex, tree, std::numeric_limits<double>::quiet_NaN()));
+  // A clean closed surface has none at the commands' tolerance.
+  const protect::Complex torus = protect::build_complex(io::make_torus(1, 0.3, 64, 32));
+  CHECK_FALSE(protect::find_near_contact(torus, 1e-9 * 2.6));
 }
