@@ -73,11 +73,13 @@ class PointGrid {
 
   /// The first point of the chain of `slot` (kEmpty: none).
   std::uint32_t head(std::size_t slot) const { return slots_[slot].head; }
-  /// Whether a point in the chain that starts at `head` has power distance to x at most `limit`.
-  bool chain_within(std::uint32_t head, const Vec3& x, double limit) const {
+  /// Whether a point in the chain that starts at `head` has power distance to x at most `limit`,
+  /// or `ball_limit` for a ball (a point of positive weight: protecting balls have positive
+  /// radii, the other points weight 0).
+  bool chain_within(std::uint32_t head, const Vec3& x, double limit, double ball_limit) const {
     for (std::uint32_t i = head; i != kEmpty; i = next_[i]) {
       const WeightedPoint& w = points_[i];
-      if ((w.point() - x).squaredNorm() - w.w <= limit) return true;
+      if ((w.point() - x).squaredNorm() - w.w <= (w.w > 0 ? ball_limit : limit)) return true;
     }
     return false;
   }
@@ -114,21 +116,22 @@ struct SelectionPart {
 };
 
 // select_separated_points over consecutive parts of `candidates`, in one grid: each part's
-// candidates, in cell order, against the balls, the fixed points and everything chosen before
-// (in earlier parts too). One grid instead of one per part spares re-adding every point chosen
+// candidates, in cell order, against the balls (at ball_clearance times the spacing, in (0, 1]),
+// the fixed points and everything chosen before (in earlier parts too). One grid instead of one per part spares re-adding every point chosen
 // so far (the net's part costs half as much). decided[k] (if given, one per part): whether part
 // k's every candidate was decided. Parts' scales in (0, 1].
 std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std::span<const SelectionPart> parts,
                                            std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
-                                           double spacing, std::span<const double> local_spacing, bool* decided) {
+                                           double spacing, double ball_clearance, std::span<const double> local_spacing,
+                                           bool* decided) {
   std::vector<std::uint32_t> chosen;
   if (decided) std::fill(decided, decided + parts.size(), false);
   const bool local = !local_spacing.empty();
   if (!(spacing > 0) || !std::isfinite(spacing) || candidates.size() > 0xffffffffu ||
       (local && local_spacing.size() != candidates.size()))
     return chosen;
-  // A ball B(c, r) rejects x when |x - c|² - r² <= spacing², so within sqrt(spacing² + r²);
-  // a point within spacing: one cell of that size around x's reaches them all. The relative
+  // A ball B(c, r) rejects x when |x - c|² - r² <= (ball_clearance spacing)², so within
+  // sqrt(spacing² + r²); a point within spacing: one cell of that size around x's reaches them all. The relative
   // 1e-9 covers the rounding of a point's cell index (below 2^-33 of a cell at index 2^19).
   double largest_weight = 0;
   for (const WeightedPoint& b : balls) largest_weight = std::max(largest_weight, b.w);
@@ -181,9 +184,10 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
         neighbours_found = false;
       }
       const double s = local ? parts[k].scale * local_spacing[i] : part_spacing;
+      const double limit = s * s, ball_limit = ball_clearance * ball_clearance * limit;
       // The cell's own chain first: most refusals are there (a net point's refuser, often), and
       // they then cost no lookup of the 26 neighbours.
-      if (grid.chain_within(grid.head(own), x, s * s)) continue;
+      if (grid.chain_within(grid.head(own), x, limit, ball_limit)) continue;
       if (!neighbours_found) {
         // Once per cell: only this cell gains points until the next one.
         neighbours_found = true;
@@ -198,7 +202,7 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
             }
       }
       if (std::any_of(heads.begin(), heads.begin() + static_cast<std::ptrdiff_t>(occupied),
-                      [&](std::uint32_t head) { return grid.chain_within(head, x, s * s); }))
+                      [&](std::uint32_t head) { return grid.chain_within(head, x, limit, ball_limit); }))
         continue;
       grid.add_at(own, key, WeightedPoint::from(x));
       chosen.push_back(i);
@@ -214,7 +218,7 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
                                                    std::span<const Vec3> fixed, double spacing,
                                                    std::span<const double> local_spacing, bool* decided) {
   const SelectionPart whole{0, candidates.size(), 1};
-  return select_in_parts(candidates, {&whole, 1}, balls, fixed, spacing, local_spacing, decided);
+  return select_in_parts(candidates, {&whole, 1}, balls, fixed, spacing, 1, local_spacing, decided);
 }
 
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
@@ -226,7 +230,8 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
                                            SelectionPart{lattice, candidates.size() - lattice - net, kGapFillSpacing},
                                            SelectionPart{candidates.size() - net, net, kGapFillSpacing}};
   std::array<bool, 3> decided{};
-  std::vector<std::uint32_t> chosen = select_in_parts(candidates, three, balls, fixed, spacing, local_spacing, decided.data());
+  std::vector<std::uint32_t> chosen =
+      select_in_parts(candidates, three, balls, fixed, spacing, kBallClearance, local_spacing, decided.data());
   if (net_decided) *net_decided = net > 0 && decided[2];
   return chosen;
 }

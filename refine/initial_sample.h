@@ -1,8 +1,8 @@
 // The mesher's initial sample (not in the paper; mesher.h says why it keeps the guarantees):
 // points of the patches chosen so that each one is power-farther than a separation from every
-// protecting ball and from every point chosen before it - the spacing λ for the lattice's points,
-// kGapFillSpacing λ (0.9 λ) for the random points that fill its gaps - so each lies outside every
-// ball and the sample is a finite, well-spread set. Inserting it in one sorted batch instead of
+// point chosen before it - the spacing λ for the lattice's points, kGapFillSpacing λ (0.9 λ) for
+// the random points that fill its gaps - and than half that from every protecting ball
+// (kBallClearance), so each lies outside every ball and the sample is a finite, well-spread set. Inserting it in one sorted batch instead of
 // one point at a time, each with a restricted-facet update and a disk check, is the point: step 2
 // of Mesh2Complex (Dey & Levine 2009, §3) then starts close to its end. The candidates end with
 // a net of every patch, chosen from last: once every net point is decided, the sample provably
@@ -51,6 +51,22 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
 /// is about the loop's insertions; a finite initial sample may be as dense as it likes.
 inline constexpr double kGapFillSpacing = 0.9;
 
+/// How near the balls select_sample lets a candidate come: its power distance to every ball must
+/// exceed (kBallClearance × its spacing)², against spacing² to every other point. A sample point
+/// is then at least sqrt(r² + (s/2)²) from a ball's centre, outside the ball (admissible, §2.1),
+/// and no nearer than a point of step 2 might be: the paper inserts a facet's surface point
+/// wherever its weighted distance to the vertices is large, and the sample's own spacing already
+/// departs from λ. What the clearance buys: right after the batch, most disk failures on CAD
+/// models are D3 at a ball - a ball joined to a ball of another curve across a strip where the
+/// full clearance left no room for a sample point - each repaired by a step-2 insertion at ~4
+/// times a batch point's cost. At 0.5 (1 before) the 2% runs have 13 instead of 166 insertions
+/// on the cube, 83 / 165 on fandisk, 69 / 190 on anchor, 98 / 220 on joint, for 1-5% more
+/// vertices at the same size; at equal output vertex count (scripts/bench-vs-cgal.sh
+/// --match-vertices yes) every model with curves meshed 1-8% faster, the sphere (no balls) the
+/// same (BENCHMARKS.md, session 17). The cover bound (sample_cover_power) holds unchanged: a net
+/// point refused by a ball has power at most (kBallClearance s)² <= s² to it.
+inline constexpr double kBallClearance = 0.5;
+
 /// The radius of the net Domain::surface_candidates ends with, relative to the spacing: every
 /// point of every patch is within it of a net point. The net lets the mesher prove how far the
 /// sample reaches (sample_cover_power) and skip the dual-edge queries of the facets that cannot be
@@ -74,7 +90,8 @@ struct CandidateParts {
 /// `spacing`, then the random points, then the net, each at kGapFillSpacing × spacing with the
 /// points chosen before among the fixed ones, so that random points only fill the lattice's gaps
 /// and net points only what is left. Each chosen point passes select_separated_points' test, at
-/// its own part's spacing, against all points chosen before it. Indices into `candidates`;
+/// its own part's spacing, against all points chosen before it - but against the balls at
+/// kBallClearance times that spacing. Indices into `candidates`;
 /// `local_spacing` as there (scaled the same way). `net_decided`, if given, is set to whether
 /// every net point was decided - chosen, or refused by a ball or point within its spacing - which
 /// is what sample_cover_power assumes; false without a net.
@@ -87,7 +104,8 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
 /// points and the points chosen (all of them, or the triangulation's vertices that hide the
 /// rest) when select_sample decided a net of radius `net_radius` at `spacing` (the net's own,
 /// kGapFillSpacing × select_sample's): a patch point y is within h of a net point q, and q was
-/// chosen, or is within s of a point, or has power distance at most s² to a ball B(c, r), whence
+/// chosen, or is within s of a point, or has power distance at most (kBallClearance s)² <= s² to
+/// a ball B(c, r), whence
 /// π(y, B) <= (sqrt(s² + r²) + h)² - r² = s² + h² + 2 h sqrt(s² + r²), the largest of the three
 /// with the largest ball radius.
 double sample_cover_power(double spacing, double net_radius, double largest_ball_radius);

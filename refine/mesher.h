@@ -34,8 +34,9 @@
 // Initialisation: the balls; for every patch without boundary (a component without features) a
 // few seed points where lines through its interior point meet it; unless initial_sample is off,
 // a sample of the patches whose every point is power-farther than a separation (λ for the
-// lattice's points, 0.9 λ for the gap fillers) from the balls, the seeds and the sample points
-// before it (initial_sample.h) - not in the paper, which starts from the balls. The sample is a
+// lattice's points, 0.9 λ for the gap fillers) from the seeds and the sample points before it,
+// and than half that from the balls (initial_sample.h) - not in the paper, which starts from the
+// balls. The sample is a
 // finite set of points outside every ball (admissible, §2.1), inserted before step 2 starts:
 // §3's packing argument for termination is about step 2's own insertions, each of which is still
 // farther than λ from every point of S, so it holds as before (a finite start set only adds a

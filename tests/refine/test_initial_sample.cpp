@@ -23,27 +23,32 @@ namespace {
 double power(const WeightedPoint& w, const Vec3& x) { return (w.point() - x).squaredNorm() - w.w; }
 
 // The selection's contract, by brute force: every chosen point is power-farther than spacing from
-// the balls, the fixed points and every point chosen before it; every candidate left out is
-// within that of a ball, a fixed point or a chosen point (greedy: nothing it conflicts with is
-// ever dropped, so what rejected it is still there).
+// the fixed points and every point chosen before it, and than ball_clearance times the spacing
+// from the balls; every candidate left out is within that of a ball, a fixed point or a chosen
+// point (greedy: nothing it conflicts with is ever dropped, so what rejected it is still there).
 void check_selection(const std::vector<Vec3>& candidates, const std::vector<WeightedPoint>& balls,
                      const std::vector<Vec3>& fixed, double spacing, const std::vector<std::uint32_t>& chosen,
-                     const std::vector<double>& local = {}) {
+                     const std::vector<double>& local = {}, double ball_clearance = 1) {
   const auto limit_of = [&](std::size_t i) { return local.empty() ? spacing * spacing : local[i] * local[i]; };
   std::vector<WeightedPoint> blockers(balls);
   for (const Vec3& p : fixed) blockers.push_back(WeightedPoint::from(p));
+  // Blocker k rejects candidate i: within the spacing, or within the clearance for a ball.
+  const auto blocks = [&](std::size_t k, std::size_t i) {
+    const double scale = k < balls.size() ? ball_clearance * ball_clearance : 1;
+    return power(blockers[k], candidates[i]) <= scale * limit_of(i);
+  };
   std::vector<char> is_chosen(candidates.size(), 0);
   for (const std::uint32_t i : chosen) {
     REQUIRE(i < candidates.size());
     CHECK_FALSE(is_chosen[i]);
     is_chosen[i] = 1;
-    for (const WeightedPoint& b : blockers) CHECK(power(b, candidates[i]) > limit_of(i));
+    for (std::size_t k = 0; k < blockers.size(); ++k) CHECK_FALSE(blocks(k, i));
     blockers.push_back(WeightedPoint::from(candidates[i]));
   }
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (is_chosen[i] || !candidates[i].allFinite()) continue;
     bool blocked = false;
-    for (const WeightedPoint& b : blockers) blocked |= power(b, candidates[i]) <= limit_of(i);
+    for (std::size_t k = 0; k < blockers.size() && !blocked; ++k) blocked = blocks(k, i);
     CHECK(blocked);
   }
 }
@@ -523,7 +528,12 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
   bool decided = false;
   const auto chosen = refine::select_sample(points, parts, balls, {}, spacing, {}, &decided);
   CHECK(decided);
-  check_selection(points, balls, {}, spacing, chosen, sample_spacings(points.size(), parts.lattice, spacing));
+  check_selection(points, balls, {}, spacing, chosen, sample_spacings(points.size(), parts.lattice, spacing),
+                  refine::kBallClearance);
+  // The clearance is used: some chosen point is nearer a ball than a spacing would allow.
+  CHECK(std::any_of(chosen.begin(), chosen.end(), [&](std::uint32_t i) {
+    return std::any_of(balls.begin(), balls.end(), [&](const WeightedPoint& b) { return power(b, points[i]) <= spacing * spacing; });
+  }));
   std::vector<WeightedPoint> sample(balls);
   for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
   const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
