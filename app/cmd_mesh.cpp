@@ -99,17 +99,19 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   // One floor for every ball of the run, Protect's and RefineBall's (protect::options_for_size).
   const protect::ProtectOptions ball_options = protect::options_for_size(lambda, (box.hi - box.lo).norm());
   std::optional<protect::BallSet> ball_set;
-  try {
-    ball_set.emplace(protect::protect(domain.complex(), lambda, ball_options));
-  } catch (const protect::ProtectionError& e) {
-    const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
-    throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
-  }
+  const auto protect_curves = [&] {
+    try {
+      ball_set.emplace(protect::protect(domain.complex(), lambda, ball_options));
+    } catch (const protect::ProtectionError& e) {
+      const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
+      throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
+    }
+  };
+  protect_curves();
   const double seconds_protect = seconds_since(t_protect);
   phases.emplace_back("protect", seconds_protect);
 
   const auto t_refine = Clock::now();
-  refine::ProtectedBalls balls(*ball_set, ball_options);
   refine::MesherOptions options;
   options.facet_size = lambda;
   if (!o.facet_distance.empty()) {
@@ -121,9 +123,32 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(expected));
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
   progress.phase("refine");
-  refine::Mesher mesher(domain, balls, options);
+  std::optional<refine::ProtectedBalls> balls;
+  std::optional<refine::Mesher> meshing;
   try {
-    mesher.run();
+    for (;;) {
+      balls.emplace(*ball_set, ball_options);
+      meshing.emplace(domain, *balls, options);
+      try {
+        meshing->run();
+        break;
+      } catch (const protect::ProtectionError& e) {
+        // The initial sample let within half its spacing of the balls spares most step-2 repairs
+        // along curves, but on a few hard models it moves where refinement meets the balls'
+        // floor (initial_sample.h, kBallClearance): once, start again from Protect's balls with
+        // the sample a full spacing from them (the retry's time counts as refinement's).
+        if (!options.initial_sample || options.sample_ball_clearance >= 1) throw;
+        if (!g.quiet)
+          std::fprintf(stderr,
+                       "delpsc: refinement reached the balls' floor (%s); retrying with the initial sample a full "
+                       "spacing from the balls\n",
+                       e.what());
+        options.sample_ball_clearance = 1;
+        meshing.reset();
+        balls.reset();
+        protect_curves();
+      }
+    }
   } catch (const protect::ProtectionError& e) {
     // Refinement shrinks protecting balls where the disk condition fails near a curve; shrinking
     // past protect's safety cap means the complex cannot be meshed at any size, e.g. part.off at
@@ -138,6 +163,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, o.input + ": refinement needed protecting balls smaller than the model allows (" +
                                  e.what() + "); " + (defect.empty() ? std::string(generic) : defect)};
   }
+  refine::Mesher& mesher = *meshing;
   const double seconds_refine = seconds_since(t_refine);
   phases.emplace_back("refine", seconds_refine);
   const io::SurfaceMesh mesh = mesher.output();
@@ -172,6 +198,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("balls", ball_set->size());
   report("ball_refinements", mesher.stats().ball_refinements);
   report("initial_sample", mesher.stats().sampled);
+  report("sample_ball_clearance", options.sample_ball_clearance);
   report("seconds_protect", seconds_protect);
   report("seconds_refine", seconds_refine);
   report("seconds", seconds);

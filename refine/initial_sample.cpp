@@ -223,7 +223,10 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
 
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
-                                         double spacing, std::span<const double> local_spacing, bool* net_decided) {
+                                         double spacing, std::span<const double> local_spacing, bool* net_decided,
+                                         double ball_clearance) {
+  if (net_decided) *net_decided = false;
+  if (!(ball_clearance > 0 && ball_clearance <= 1)) return {};
   const std::size_t lattice = std::min(parts.lattice, candidates.size());
   const std::size_t net = std::min(parts.net, candidates.size() - lattice);
   const std::array<SelectionPart, 3> three{SelectionPart{0, lattice, 1},
@@ -231,7 +234,7 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
                                            SelectionPart{candidates.size() - net, net, kGapFillSpacing}};
   std::array<bool, 3> decided{};
   std::vector<std::uint32_t> chosen =
-      select_in_parts(candidates, three, balls, fixed, spacing, kBallClearance, local_spacing, decided.data());
+      select_in_parts(candidates, three, balls, fixed, spacing, ball_clearance, local_spacing, decided.data());
   if (net_decided) *net_decided = net > 0 && decided[2];
   return chosen;
 }

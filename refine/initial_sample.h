@@ -66,6 +66,10 @@ inline constexpr double kGapFillSpacing = 0.9;
 /// same (BENCHMARKS.md, session 17). The cover bound (sample_cover_power) holds unchanged: a net
 /// point refused by a ball has power at most (kBallClearance s)² <= s² to it.
 inline constexpr double kBallClearance = 0.5;
+// Not everywhere a gain: on two of the hardest libcgal-demo models the half clearance shifted
+// where refinement met the balls' floor (hand.off at 1%, a 2.1° fold, and cheese.off at 4%
+// failed; triceratops.off at 4% newly meshed), so `delpsc mesh` retries such a run once with
+// the full clearance (MesherOptions::sample_ball_clearance).
 
 /// The radius of the net Domain::surface_candidates ends with, relative to the spacing: every
 /// point of every patch is within it of a net point. The net lets the mesher prove how far the
@@ -94,11 +98,12 @@ struct CandidateParts {
 /// kBallClearance times that spacing. Indices into `candidates`;
 /// `local_spacing` as there (scaled the same way). `net_decided`, if given, is set to whether
 /// every net point was decided - chosen, or refused by a ball or point within its spacing - which
-/// is what sample_cover_power assumes; false without a net.
+/// is what sample_cover_power assumes; false without a net. `ball_clearance` in (0, 1] replaces
+/// kBallClearance (1: the balls at the full spacing); outside that range, nothing is chosen.
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                          double spacing, std::span<const double> local_spacing = {},
-                                         bool* net_decided = nullptr);
+                                         bool* net_decided = nullptr, double ball_clearance = kBallClearance);
 
 /// A bound on the power distance from any point of the patches to the nearest of the balls, the fixed
 /// points and the points chosen (all of them, or the triangulation's vertices that hide the

@@ -164,7 +164,8 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   }
   bool net_decided = false;
   const std::vector<std::uint32_t> chosen =
-      select_sample(candidates, parts, balls, fixed, options_.facet_size, local, &net_decided);
+      select_sample(candidates, parts, balls, fixed, options_.facet_size, local, &net_decided,
+                    options_.sample_ball_clearance);
   // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.

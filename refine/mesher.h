@@ -81,6 +81,7 @@
 #include "disk_condition.h"
 #include "domain.h"
 #include "facet_criteria.h"
+#include "initial_sample.h"
 #include "restricted_facets.h"
 
 namespace delpsc::refine {
@@ -100,6 +101,10 @@ struct MesherOptions {
   /// Needs facet_size > 0; with `sizing` too, each sample point's separation is min(λ, sizing)
   /// (0.9 times that for the gap fillers).
   bool initial_sample = true;
+  /// How near the balls the initial sample may come, in (0, 1] (initial_sample.h,
+  /// kBallClearance): 1 keeps it a full separation from them. `delpsc mesh` retries a run that
+  /// ends at the balls' floor once with 1.
+  double sample_ball_clearance = kBallClearance;
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
   bool local_disk_refinement = true;

@@ -534,6 +534,18 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
   CHECK(std::any_of(chosen.begin(), chosen.end(), [&](std::uint32_t i) {
     return std::any_of(balls.begin(), balls.end(), [&](const WeightedPoint& b) { return power(b, points[i]) <= spacing * spacing; });
   }));
+  // The full clearance (MesherOptions::sample_ball_clearance = 1, `delpsc mesh`'s retry): the
+  // balls at the whole spacing, fewer points; a clearance outside (0, 1] chooses nothing.
+  bool full_decided = false;
+  const auto full = refine::select_sample(points, parts, balls, {}, spacing, {}, &full_decided, 1);
+  CHECK(full_decided);
+  check_selection(points, balls, {}, spacing, full, sample_spacings(points.size(), parts.lattice, spacing), 1);
+  CHECK(full.size() < chosen.size());
+  for (const double bad : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    bool bad_decided = true;
+    CHECK(refine::select_sample(points, parts, balls, {}, spacing, {}, &bad_decided, bad).empty());
+    CHECK_FALSE(bad_decided);
+  }
   std::vector<WeightedPoint> sample(balls);
   for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
   const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
