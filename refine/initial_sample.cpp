@@ -239,9 +239,11 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
   return chosen;
 }
 
-double sample_cover_power(double spacing, double net_radius, double largest_ball_radius) {
-  const double s = spacing, h = net_radius, r = largest_ball_radius;
-  return s * s + h * h + 2 * h * std::sqrt(s * s + r * r);
+double sample_cover_power(double spacing, double net_radius, double largest_ball_radius, double ball_clearance) {
+  const double s = spacing, h = net_radius, r = largest_ball_radius, ks = ball_clearance * spacing;
+  const double near_point = (s + h) * (s + h);
+  const double near_ball = ks * ks + h * h + 2 * h * std::sqrt(ks * ks + r * r);
+  return std::max(near_point, near_ball);
 }
 
 }  // namespace delpsc::refine

@@ -63,8 +63,8 @@ inline constexpr double kGapFillSpacing = 0.9;
 /// on the cube, 83 / 165 on fandisk, 69 / 190 on anchor, 98 / 220 on joint, for 1-5% more
 /// vertices at the same size; at equal output vertex count (scripts/bench-vs-cgal.sh
 /// --match-vertices yes) every model with curves meshed 1-8% faster, the sphere (no balls) the
-/// same (BENCHMARKS.md, session 17). The cover bound (sample_cover_power) holds unchanged: a net
-/// point refused by a ball has power at most (kBallClearance s)² <= s² to it.
+/// same (BENCHMARKS.md, session 17). The cover bound (sample_cover_power) even tightens: a net
+/// point refused by a ball has power at most (kBallClearance s)² to it.
 inline constexpr double kBallClearance = 0.5;
 // Not everywhere a gain: on two of the hardest libcgal-demo models the half clearance shifted
 // where refinement met the balls' floor (hand.off at 1%, a 2.1° fold, and cheese.off at 4%
@@ -108,11 +108,13 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
 /// A bound on the power distance from any point of the patches to the nearest of the balls, the fixed
 /// points and the points chosen (all of them, or the triangulation's vertices that hide the
 /// rest) when select_sample decided a net of radius `net_radius` at `spacing` (the net's own,
-/// kGapFillSpacing × select_sample's): a patch point y is within h of a net point q, and q was
-/// chosen, or is within s of a point, or has power distance at most (kBallClearance s)² <= s² to
-/// a ball B(c, r), whence
-/// π(y, B) <= (sqrt(s² + r²) + h)² - r² = s² + h² + 2 h sqrt(s² + r²), the largest of the three
-/// with the largest ball radius.
-double sample_cover_power(double spacing, double net_radius, double largest_ball_radius);
+/// kGapFillSpacing × select_sample's) with the balls at `ball_clearance` k (select_sample's): a
+/// patch point y is within h of a net point q, and q was chosen (power h² at most), or is within
+/// s of a point (at most (s + h)²), or has power distance at most (k s)² to a ball B(c, r), whence
+/// π(y, B) <= (sqrt(k² s² + r²) + h)² - r² = k² s² + h² + 2 h sqrt(k² s² + r²), at the largest ball
+/// radius; the larger of the last two. With k = 1 the ball's term is the larger; kBallClearance
+/// lowers the bound from 6.3 to 5.1 λ² with balls of radius λ, and the first examination skips
+/// more facets.
+double sample_cover_power(double spacing, double net_radius, double largest_ball_radius, double ball_clearance = 1);
 
 }  // namespace delpsc::refine

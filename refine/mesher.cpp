@@ -179,7 +179,8 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   // by the vertices there), which is what the bound assumes; the net was chosen from at the
   // gap fillers' spacing.
   if (net_decided && parts.net_radius > 0)
-    sample_cover_power_ = sample_cover_power(kGapFillSpacing * options_.facet_size, parts.net_radius, largest_radius);
+    sample_cover_power_ = sample_cover_power(kGapFillSpacing * options_.facet_size, parts.net_radius, largest_radius,
+                                             options_.sample_ball_clearance);
 }
 
 void Mesher::recheck(PointId p) {

@@ -548,7 +548,9 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
   }
   std::vector<WeightedPoint> sample(balls);
   for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
-  const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
+  const double bound =
+      refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius, refine::kBallClearance);
+  CHECK(bound < refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius));
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> unit(0, 1);
   double worst = 0;
@@ -577,13 +579,19 @@ TEST_CASE("select_sample decides the whole net, and the sample then reaches ever
   CHECK(decided);
 }
 
-TEST_CASE("sample_cover_power: attained by a net point just refused by the largest ball") {
-  // A net point q just outside the reach of ball B(0, r) at spacing s (power distance s²), and a
-  // patch point y a net radius h beyond it: nothing nearer than B, at power distance the bound.
-  for (const auto& [s, h, r] : {std::array<double, 3>{1, 1.5, 1}, {0.3, 0.2, 0}, {2, 0.5, 3}}) {
-    const Vec3 q(std::sqrt(s * s + r * r), 0, 0), y = q + Vec3(h, 0, 0);
-    const WeightedPoint ball = WeightedPoint::from(Vec3::Zero(), r * r);
-    const double power = y.squaredNorm() - ball.w;
-    CHECK(refine::sample_cover_power(s, h, r) == doctest::Approx(power));
-  }
+TEST_CASE("sample_cover_power: attained by a net point just refused by the largest ball, or by a point") {
+  // A net point q just outside the reach of ball B(0, r) at clearance k (power distance (k s)²),
+  // and a patch point y a net radius h beyond it: nothing nearer than B, at power distance the
+  // ball's term. A net point refused by a point p at distance s, y a net radius beyond: (s + h)².
+  // The bound is the larger of the two.
+  for (const auto& [s, h, r] : {std::array<double, 3>{1, 1.5, 1}, {0.3, 0.2, 0}, {2, 0.5, 3}, {0.9, 1.35, 0.6}})
+    for (const double k : {1.0, refine::kBallClearance, 0.1}) {
+      CAPTURE(s);
+      CAPTURE(k);
+      const Vec3 q(std::sqrt(k * k * s * s + r * r), 0, 0), y = q + Vec3(h, 0, 0);
+      const double ball_term = y.squaredNorm() - r * r;
+      const double point_term = (s + h) * (s + h);
+      CHECK(refine::sample_cover_power(s, h, r, k) == doctest::Approx(std::max(ball_term, point_term)));
+      if (k == 1) CHECK(ball_term >= point_term);  // the ball's term bounds both at full clearance
+    }
 }

@@ -139,7 +139,8 @@ TEST_CASE("rebuild with the initial sample's proven cover skips most queries and
     std::vector<WeightedPoint> sample(balls);
     for (const std::uint32_t i : chosen) sample.push_back(WeightedPoint::from(points[i]));
     dt.insert(sample);
-    const double bound = refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius);
+    const double bound =
+        refine::sample_cover_power(refine::kGapFillSpacing * spacing, parts.net_radius, radius, refine::kBallClearance);
     refine::RestrictedFacets culled(dt, domain), all(dt, domain);
     culled.exclude_vertices(frame);
     all.exclude_vertices(frame);
