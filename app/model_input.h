@@ -80,7 +80,8 @@ inline void reject_self_intersections(const protect::Complex& complex, const ker
   kernel::Box3 box;
   for (const Vec3& p : complex.vertices) box.extend(p);
   const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
-  const protect::InputDefects defects = protect::find_input_defects(complex, tree, kSelfIntersectionsCounted, tolerance);
+  const protect::InputDefects defects =
+      protect::find_input_defects(complex, tree, kSelfIntersectionsCounted, tolerance);
   const auto& pairs = defects.crossing;
   if (pairs.empty()) {
     if (defects.near_contact) reject_near_contact(complex, *defects.near_contact, tolerance, path);
