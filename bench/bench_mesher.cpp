@@ -158,8 +158,8 @@ void orient(benchmark::State& state, const Model& m) {
 }
 
 // What app/model_input.h's reject_self_intersections does on a clean model: one tree, then both
-// checks in one descent of it (nothing is found, so every box-overlapping pair is decided). The tolerance is the
-// command's, 1e-9 of the diagonal.
+// checks in one descent of it (nothing is found, so every box-overlapping pair is decided). The
+// tolerance is the command's, 1e-9 of the diagonal.
 void input_checks(benchmark::State& state, const Model& m) {
   const protect::Complex& complex = m.domain->complex();
   const double tolerance = 1e-9 * m.domain->bounding_box().diagonal();

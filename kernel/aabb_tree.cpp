@@ -406,6 +406,8 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
 void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f,
                                          double margin) const {
   if (nodes_.empty()) return;
+  // A negative or NaN margin would shrink or void every box and drop pairs that overlap.
+  if (!(margin > 0)) margin = 0;
   // Two boxes each grown by the margin overlap iff one overlaps the other grown by twice it.
   const Vec3 grow = Vec3::Constant(margin), grow2 = Vec3::Constant(2 * margin);
   const auto node_box = [&](std::uint32_t i) {

@@ -125,12 +125,13 @@ class AabbTree {
   void triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out) const;
 
   /// Calls f(a, b) once for every unordered pair of distinct triangles (ids, in no particular
-  /// order) whose closed bounding boxes, each grown by `margin` (>= 0) on every side, overlap -
+  /// order) whose closed bounding boxes, each grown by `margin` on every side (a negative or NaN
+  /// margin counts as 0), overlap -
   /// with margin 0 the same pairs as triangles_in_box with each triangle's box, found by one
   /// simultaneous descent of the tree against itself (each pair of overlapping nodes visited
   /// once) instead of a query per triangle. A positive margin also pairs triangles up to about
   /// 2 margin apart per axis (the growth is rounded to nearest: give it slack). O(n log n + k)
-  /// for k pairs on typical input.
+  /// for k pairs on typical input; a margin as large as the model pairs every two triangles.
   void for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f,
                                  double margin = 0) const;
 

@@ -117,9 +117,10 @@ struct SelectionPart {
 
 // select_separated_points over consecutive parts of `candidates`, in one grid: each part's
 // candidates, in cell order, against the balls (at ball_clearance times the spacing, in (0, 1]),
-// the fixed points and everything chosen before (in earlier parts too). One grid instead of one per part spares re-adding every point chosen
-// so far (the net's part costs half as much). decided[k] (if given, one per part): whether part
-// k's every candidate was decided. Parts' scales in (0, 1].
+// the fixed points and everything chosen before (in earlier parts too). One grid instead of one
+// per part spares re-adding every point chosen so far (the net's part costs half as much).
+// decided[k] (if given, one per part): whether part k's every candidate was decided. Parts'
+// scales in (0, 1].
 std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std::span<const SelectionPart> parts,
                                            std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                            double spacing, double ball_clearance, std::span<const double> local_spacing,
@@ -131,8 +132,9 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
       (local && local_spacing.size() != candidates.size()))
     return chosen;
   // A ball B(c, r) rejects x when |x - c|² - r² <= (ball_clearance spacing)², so within
-  // sqrt(spacing² + r²); a point within spacing: one cell of that size around x's reaches them all. The relative
-  // 1e-9 covers the rounding of a point's cell index (below 2^-33 of a cell at index 2^19).
+  // sqrt(spacing² + r²); a point within spacing: one cell of that size around x's reaches them
+  // all. The relative 1e-9 covers the rounding of a point's cell index (below 2^-33 of a cell at
+  // index 2^19).
   double largest_weight = 0;
   for (const WeightedPoint& b : balls) largest_weight = std::max(largest_weight, b.w);
   const double cell = std::sqrt(spacing * spacing + largest_weight) * (1 + 1e-9);

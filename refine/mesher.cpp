@@ -32,6 +32,11 @@ Mesher::Mesher(const Domain& domain, BallSource& balls, const MesherOptions& opt
       facets_(dt_, domain),
       disk_(domain, balls, places_) {
   facets_.set_badness([this](const RestrictedFacet& r) { return criteria_.badness(r, dt_); });
+  // Outside (0, 1] select_sample would choose nothing, and the run would quietly start as the
+  // paper's instead.
+  if (!(options.sample_ball_clearance > 0 && options.sample_ball_clearance <= 1))
+    throw std::invalid_argument("sample_ball_clearance must be in (0, 1] (got " +
+                                std::to_string(options.sample_ball_clearance) + ")");
 }
 
 void Mesher::seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const {

@@ -102,8 +102,8 @@ struct MesherOptions {
   /// (0.9 times that for the gap fillers).
   bool initial_sample = true;
   /// How near the balls the initial sample may come, in (0, 1] (initial_sample.h,
-  /// kBallClearance): 1 keeps it a full separation from them. `delpsc mesh` retries a run that
-  /// ends at the balls' floor once with 1.
+  /// kBallClearance; the constructor refuses other values): 1 keeps it a full separation from
+  /// them. `delpsc mesh` retries a run that ends at the balls' floor once with 1.
   double sample_ball_clearance = kBallClearance;
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.

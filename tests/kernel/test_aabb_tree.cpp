@@ -356,4 +356,11 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
   const std::size_t touching = check(spread);
   CHECK(check(spread, 0.01) > touching + 100);
   CHECK(check(grid_soup(20), 0.6) > check(grid_soup(20)));  // the next ring, 1 apart
+  // A negative or NaN margin counts as 0: no overlapping pair is dropped.
+  const AabbTree tree(spread.vertices, spread.triangles);
+  for (const double bad : {-0.01, std::numeric_limits<double>::quiet_NaN()}) {
+    std::size_t n = 0;
+    tree.for_each_overlapping_pair([&](std::uint32_t, std::uint32_t) { ++n; }, bad);
+    CHECK(n == touching);
+  }
 }

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 #include <delpsc/io/read_model.h>
@@ -32,6 +34,7 @@ struct Run {
   bool local_disk_refinement = true;
   bool check_patch_topology = true;
   bool initial_sample = true;  // false: step 2 starts from the balls and seeds alone, as the paper's
+  double sample_ball_clearance = refine::kBallClearance;
 };
 
 Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run = {}) {
@@ -46,6 +49,7 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run =
   options.max_vertices = 30000;
   options.local_disk_refinement = run.local_disk_refinement;
   options.initial_sample = run.initial_sample;
+  options.sample_ball_clearance = run.sample_ball_clearance;
   refine::Mesher mesher(domain, balls, options);
   test::run_mesher_and_check(mesher, &set);
   Outcome out;
@@ -98,6 +102,25 @@ TEST_CASE("the initial sample's proven cover spares first queries, and only with
   capped.run();
   CHECK(capped.stats().sampled == 0);
   CHECK(capped.stats().cover_skipped == 0);
+}
+
+TEST_CASE("the sample's clearance from the balls: the full one (delpsc mesh's retry) meshes too, and fewer points") {
+  // The box with a fin at 2%: with the half clearance the sample comes nearer the curves' balls,
+  // so it is larger and leaves step 2 fewer repairs (each run checked by run_mesher_and_check).
+  const Outcome half = mesh_model(io::make_box_with_fin(4), 0.02);
+  const Outcome full = mesh_model(io::make_box_with_fin(4), 0.02, {.sample_ball_clearance = 1});
+  CHECK(full.report.ok());
+  CHECK(half.stats.sampled > full.stats.sampled);
+  // A clearance outside (0, 1] would leave the sample out without a word: refused.
+  refine::PolygonDomain domain(io::make_box_with_fin(4));
+  protect::BallSet set = protect::protect(domain.complex(), 0.1);
+  refine::ProtectedBalls balls(set);
+  for (const double bad : {0.0, -1.0, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    refine::MesherOptions options;
+    options.facet_size = 0.1;
+    options.sample_ball_clearance = bad;
+    CHECK_THROWS_AS(refine::Mesher(domain, balls, options), std::invalid_argument);
+  }
 }
 
 TEST_CASE("open square sheet") { mesh_model(io::make_square_sheet(4), 0.04); }
