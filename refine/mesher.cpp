@@ -370,7 +370,7 @@ bool Mesher::refine_around(PointId p) {
     d1 = r.size;
     best = slot;
   }
-  if (best != kNoFacet && d1 >= d2) {
+  if (best != kNoFacet && d1 >= kLocalBallRatio * d2) {  // a ball only far above its facets
     ++stats_.insertions_disk;
     return insert_surface_point(best);
   }

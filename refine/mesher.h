@@ -12,7 +12,8 @@
 //       the whole model down to the size that failure needs. Lemma 2.2
 //       (D1, D2 hold at p once the triangles and balls near p are small enough) suggests the
 //       local choice also terminates, but the packing argument of §3 is written for the global
-//       one and is not redone here: max_vertices is the guard. When p has no usable umbrella
+//       one and is not redone here: max_vertices is the guard. Locally, x is inserted while
+//       d1 >= kLocalBallRatio d2 (below), not d1 >= d2. When p has no usable umbrella
 //       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
 //       already proved off V_t (discarded) is handled by the same local step. A D3/D4 facet
 //       whose point lies within √2 radii of a ball vertex off its patch refines that ball
@@ -86,6 +87,22 @@
 
 namespace delpsc::refine {
 
+/// Step 2(a) with local_disk_refinement refines p's ball only when every restricted facet around
+/// p is smaller than this fraction of its radius (d1 < kLocalBallRatio d2); until then it inserts
+/// the point x of p's largest facet. At a corner where two feature curves leave a few degrees
+/// apart - a needle face, common on convex hulls of random points and CAD parts, - or where a
+/// patch folds back by a few degrees, the configuration looks the same at every scale: a disk
+/// failure there is resolved by a sample finer than the balls, never by smaller balls, and with
+/// d1 >= d2 each RefineBall was followed by the same failure one scale down until the balls'
+/// floor (protect::kSmallestBallOfLambda) ended the run. Measured (BENCHMARKS.md, session 18):
+/// random convex hulls 27 of 1,120 runs failing -> 0 at 1/16; over the 143 libcgal-demo models
+/// at 4/2/1/0.5% every model that meshed still meshes, 3-23% fewer vertices on the models whose
+/// balls shrank before (lion, triceratops, blade), the benchmark models unchanged; at 1/64 hand
+/// meshes at 2% and 0.5% as well. Inserted points keep a weighted distance of at least
+/// kLocalBallRatio times the smallest ball radius from the others, so the packing argument
+/// bounds them as before, with the constant divided by 64.
+inline constexpr double kLocalBallRatio = 1.0 / 64;
+
 struct MesherOptions {
   double facet_size = 0;          ///< λ of step 2(b), absolute (> 0 unless `sizing` is given)
   /// λ as a function of position, absolute, positive and finite on the domain (the smaller of it
@@ -116,7 +133,7 @@ struct MesherOptions {
 };
 
 struct MesherStats {
-  std::size_t insertions_disk = 0;      ///< step 2(a), D1/D2 failure, d1 >= d2
+  std::size_t insertions_disk = 0;      ///< step 2(a), D1/D2 failure, d1 >= d2 (locally: kLocalBallRatio d2)
   std::size_t insertions_d34 = 0;       ///< step 2(a), D3/D4 failure
   std::size_t insertions_size = 0;      ///< step 2(b), facet_size (or sizing) failed worst
   std::size_t insertions_distance = 0;  ///< step 2(b), facet_distance failed worst
