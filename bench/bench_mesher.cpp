@@ -89,8 +89,8 @@ void initial_sample(benchmark::State& state, const Model& m) {
   for (const protect::BallId id : m.balls->live_ids()) balls.push_back((*m.balls)[id].weighted_point());
   std::size_t chosen = 0, candidates = 0;
   for (auto _ : state) {
-    std::vector<Vec3> points;
-    std::vector<std::uint32_t> patches;
+    kernel::LargeVector<Vec3> points;
+    kernel::LargeVector<std::uint32_t> patches;
     const refine::CandidateParts parts = m.domain->surface_candidates(m.lambda, 0xffffffffu, points, patches);
     candidates = points.size();
     chosen = refine::select_sample(points, parts, balls, {}, m.lambda).size();
@@ -105,8 +105,8 @@ void candidates(benchmark::State& state, const Model& m, double scale) {
   std::size_t count = 0;
   refine::CandidateParts parts;
   for (auto _ : state) {
-    std::vector<Vec3> points;
-    std::vector<std::uint32_t> patches;
+    kernel::LargeVector<Vec3> points;
+    kernel::LargeVector<std::uint32_t> patches;
     parts = m.domain->surface_candidates(scale * m.lambda, 0xffffffffu, points, patches);
     count = points.size();
     benchmark::DoNotOptimize(points);

@@ -92,7 +92,7 @@ class ScratchList {
 /// Working memory of the operations, kept between calls so that an insertion allocates nothing
 /// once the vectors have grown to the largest cavity seen.
 struct RegularTriangulation::Scratch {
-  std::vector<std::uint8_t> cell_mark;   // by CellId; all zero between operations
+  kernel::LargeVector<std::uint8_t> cell_mark;   // by CellId; all zero between operations
   std::vector<std::uint32_t> local_id;   // by PointId; all zero between operations
   ScratchList<CellId> conflict;          // conflict region, in discovery order
   ScratchList<CellId> rejected;          // neighbours tested and found not in conflict

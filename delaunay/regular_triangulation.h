@@ -63,6 +63,8 @@
 #include <string>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::delaunay {
@@ -316,12 +318,12 @@ class RegularTriangulation {
   void finish_removal(PointId v, ChangeSet* changes);
   Scratch& scratch() const;
 
-  std::vector<WeightedPoint> points_;   // by PointId
-  std::vector<CellId> point_cell_;      // vertex: an incident cell; hidden: its cell; else kNoCell
-  std::vector<PointStatus> status_;     // by PointId
-  std::vector<PointId> hidden_next_;    // next hidden point of the same cell (allocated lazily)
-  std::vector<PointId> cell_hidden_;    // first hidden point of each cell (allocated lazily)
-  std::vector<Cell> cells_;
+  kernel::LargeVector<WeightedPoint> points_;   // by PointId
+  kernel::LargeVector<CellId> point_cell_;      // vertex: an incident cell; hidden: its cell; else kNoCell
+  kernel::LargeVector<PointStatus> status_;     // by PointId
+  kernel::LargeVector<PointId> hidden_next_;    // next hidden point of the same cell (allocated lazily)
+  kernel::LargeVector<PointId> cell_hidden_;    // first hidden point of each cell (allocated lazily)
+  kernel::LargeVector<Cell> cells_;
   CellId free_head_ = kNoCell;
   std::size_t free_count_ = 0;
   CellId infinite_cell_ = kNoCell;

@@ -69,7 +69,7 @@ void hilbert_sort(std::span<const WeightedPoint> points, std::span<std::uint32_t
   const double scale = extent > 0 ? cells / extent : 0;
   const auto max_cell = static_cast<std::uint32_t>(cells - 1);
 
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> items(indices.size());
+  kernel::KeyedIndices items(indices.size());
   for (std::size_t j = 0; j < indices.size(); ++j) {
     const double* p = points[indices[j]].data();
     std::array<std::uint32_t, 3> cell;

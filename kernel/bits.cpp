@@ -4,11 +4,11 @@
 
 namespace delpsc::kernel {
 
-void radix_sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items, int key_bits) {
+void radix_sort_by_key(KeyedIndices& items, int key_bits) {
   // 16-bit digits (fewer passes) once the items outnumber the counters; 8-bit below.
   const int width = items.size() >= (std::size_t{1} << 16) ? 16 : 8;
   std::vector<std::size_t> count((std::size_t{1} << width) + 1);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> other(items.size());
+  KeyedIndices other(items.size());
   for (int shift = 0; shift < key_bits; shift += width) {
     // The last digit may be narrower: bits above key_bits take no part.
     const std::uint64_t digit = (std::uint64_t{1} << std::min(width, key_bits - shift)) - 1;

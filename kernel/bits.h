@@ -1,10 +1,12 @@
 // Two integer tools several modules share: a 64-bit mixing function and a radix sort of
-// (key, index) pairs.
+// (key, index) pairs (in a LargeVector: the sorts run over every candidate or point of a batch).
 #pragma once
 
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include "large_array.h"
 
 namespace delpsc::kernel {
 
@@ -21,6 +23,7 @@ inline std::uint64_t mix64(std::uint64_t z) {
 /// Sorts (key, index) pairs by the low `key_bits` bits of the key (1 to 64), stably: least
 /// significant digit first, 8 or 16 bits a pass, skipping a digit that all keys share. O(n) per pass,
 /// n extra pairs of memory.
-void radix_sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items, int key_bits = 64);
+using KeyedIndices = LargeVector<std::pair<std::uint64_t, std::uint32_t>>;
+void radix_sort_by_key(KeyedIndices& items, int key_bits = 64);
 
 }  // namespace delpsc::kernel

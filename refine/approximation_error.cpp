@@ -146,7 +146,7 @@ void sample_surface(std::span<const Vec3> vertices, std::span<const Triangle> tr
   std::vector<std::uint8_t> sampled(vertices.size(), 0);
   for (const Triangle& t : triangles.first(first))
     for (const std::uint32_t v : t) sampled[v] = 1;
-  std::vector<Vec3> inside;
+  kernel::LargeVector<Vec3> inside;
   for (const Triangle& t : triangles.subspan(first)) {
     for (const std::uint32_t v : t)
       if (!sampled[v]) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <delpsc/kernel/aabb_tree.h>
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 #include "initial_sample.h"
@@ -115,8 +116,8 @@ class Domain {
   /// chosen from last whose radius the mesher may rely on (a promise: every point of every patch
   /// within net_radius of a net point). The default appends none: the mesher then starts from
   /// the balls and the seeds alone, as the paper does.
-  virtual CandidateParts surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                                            std::vector<std::uint32_t>& patches) const {
+  virtual CandidateParts surface_candidates(double spacing, std::size_t budget, kernel::LargeVector<Vec3>& points,
+                                            kernel::LargeVector<std::uint32_t>& patches) const {
     (void)spacing, (void)budget, (void)points, (void)patches;
     return {};
   }

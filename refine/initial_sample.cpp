@@ -103,10 +103,10 @@ class PointGrid {
 
   Vec3 origin_;
   double inverse_;
-  std::vector<Slot> slots_;
-  std::vector<std::uint64_t> home_used_;  // bit i: some cell's home slot is i
-  std::vector<WeightedPoint> points_;
-  std::vector<std::uint32_t> next_;
+  kernel::LargeVector<Slot> slots_;
+  kernel::LargeVector<std::uint64_t> home_used_;  // bit i: some cell's home slot is i
+  kernel::LargeVector<WeightedPoint> points_;
+  kernel::LargeVector<std::uint32_t> next_;
 };
 
 // Consecutive candidates [from, from + count) tested at scale × spacing (× their local spacing).
@@ -139,7 +139,7 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
   for (const WeightedPoint& b : balls) largest_weight = std::max(largest_weight, b.w);
   const double cell = std::sqrt(spacing * spacing + largest_weight) * (1 + 1e-9);
   kernel::Box3 box;
-  std::vector<std::vector<std::uint32_t>> order(parts.size());
+  std::vector<kernel::LargeVector<std::uint32_t>> order(parts.size());
   std::size_t valid = 0;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     order[k].reserve(parts[k].count);
@@ -158,7 +158,7 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
   // Cell order (then index) within a part: the candidates of a cell are tested one after
   // another against the same 27 chains, found once per cell, and the chosen points pack like a
   // scan line.
-  std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> keyed(parts.size());
+  std::vector<kernel::KeyedIndices> keyed(parts.size());
   std::size_t candidate_cells = 0;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     keyed[k].reserve(order[k].size());

@@ -3,6 +3,8 @@
 #include <map>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 #include "mesher.h"
 #include "triangle_orientation.h"
 
@@ -11,7 +13,7 @@ namespace delpsc::refine {
 io::SurfaceMesh Mesher::output() const {
   io::SurfaceMesh mesh;
   constexpr std::uint32_t kUnset = 0xffffffffu;
-  std::vector<std::uint32_t> index(dt_.number_of_points(), kUnset);  // by PointId
+  kernel::LargeVector<std::uint32_t> index(dt_.number_of_points(), kUnset);  // by PointId
   auto vertex = [&](PointId p) {
     if (index[p] == kUnset) {
       index[p] = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -25,8 +27,9 @@ io::SurfaceMesh Mesher::output() const {
   std::vector<std::uint32_t> start(domain_->patch_count() + 1, 0);
   facets_.for_each([&](std::uint32_t, const RestrictedFacet& r) { ++start[r.patch + 1]; });
   for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-  std::vector<std::uint32_t> slots(start.back());
+  kernel::LargeVector<std::uint32_t> slots(start.back());
   facets_.for_each([&](std::uint32_t slot, const RestrictedFacet& r) { slots[start[r.patch]++] = slot; });
+  mesh.vertices.reserve(domain_vertex_count());  // an upper bound: no regrowth copies
   mesh.triangles.reserve(slots.size());
   mesh.triangle_patch.reserve(slots.size());
   for (const std::uint32_t slot : slots) {

@@ -143,8 +143,8 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   // for less than λ the sample is only as dense as λ's, and refinement does the rest). A sizing
   // function alone (no λ): the paper's start.
   if (!options_.initial_sample || !(options_.facet_size > 0)) return;
-  std::vector<Vec3> candidates;
-  std::vector<std::uint32_t> patches;
+  kernel::LargeVector<Vec3> candidates;
+  kernel::LargeVector<std::uint32_t> patches;
   // About 1 candidate in 6 or 7 is chosen: more than 8 per allowed vertex cannot fit under the
   // cap and are not even made (a size far too small for the cap would otherwise exhaust memory
   // here, at ~50 bytes a candidate); fewer may still not fit, which is checked below.

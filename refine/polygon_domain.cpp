@@ -136,8 +136,8 @@ std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) c
   return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
 }
 
-CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                                                 std::vector<std::uint32_t>& patches) const {
+CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t budget, kernel::LargeVector<Vec3>& points,
+                                                 kernel::LargeVector<std::uint32_t>& patches) const {
   if (!(spacing > 0) || !std::isfinite(spacing)) return {};
   const double per_area = 4.0 / (spacing * spacing);
   const double step = kLatticeStep * spacing, jitter = kLatticeJitter * spacing;

@@ -64,8 +64,8 @@ class PolygonDomain final : public Domain {
   /// (deterministic: the generator is seeded by the triangle's index), then the net: every
   /// vertex of a triangle and each triangle's triangle_samples at kNetRadius spacings, when it
   /// fits in what the budget leaves. O(T log T + points).
-  CandidateParts surface_candidates(double spacing, std::size_t budget, std::vector<Vec3>& points,
-                                    std::vector<std::uint32_t>& patches) const override;
+  CandidateParts surface_candidates(double spacing, std::size_t budget, kernel::LargeVector<Vec3>& points,
+                                    kernel::LargeVector<std::uint32_t>& patches) const override;
 
  private:
   // Merges the tree's per-triangle hits into per-patch hits (see the file comment). `b` is the

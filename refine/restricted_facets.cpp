@@ -68,10 +68,7 @@ void RestrictedFacets::forget_record(std::uint32_t s) {
   RestrictedFacet& r = records_[s];
   gone_.push_back({r.vertices[0], r.vertices[1], r.vertices[2], r.patch});
   for (const PointId v : r.vertices) {
-    auto& list = by_vertex_[v];
-    const auto pos = std::find_if(list.begin(), list.end(), [s](const Incidence& x) { return x.slot == s; });
-    *pos = list.back();
-    list.pop_back();
+    by_vertex_.erase_first(v, [s](const Incidence& x) { return x.slot == s; });
   }
   r.alive = false;
   ++r.stamp;  // invalidates heap entries
@@ -285,12 +282,7 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
     last = s;
     for (int k = 0; k < 3; ++k) {
       const PointId u = v[k];
-      if (by_vertex_.size() <= u) by_vertex_.resize(std::max<std::size_t>(u + 1, 2 * by_vertex_.size()));
-      // A surface vertex has ~6 restricted facets: room for 8 at once instead of growing 1, 2,
-      // 4, 8 (the reallocations were 2.6% of meshing joint).
-      auto& list = by_vertex_[u];
-      if (list.capacity() == 0) list.reserve(8);
-      list.push_back({s, patch, {v[k == 0 ? 1 : 0], v[k == 2 ? 1 : 2]}});
+      by_vertex_.push(u, {s, patch, {v[k == 0 ? 1 : 0], v[k == 2 ? 1 : 2]}});
     }
     made_.push_back({v[0], v[1], v[2], patch});
     if (heap_active_) heap_.emplace(r.power, s, r.stamp);
@@ -490,7 +482,7 @@ namespace {
 
 // Lazy deletion: pops entries whose record died, was reused (stamp) or was discarded.
 template <class Heap>
-std::uint32_t top_live(Heap& heap, const std::vector<RestrictedFacet>& records) {
+std::uint32_t top_live(Heap& heap, const kernel::LargeVector<RestrictedFacet>& records) {
   while (!heap.empty()) {
     const auto [key, s, stamp] = heap.top();
     if (records[s].alive && records[s].stamp == stamp && !records[s].discarded) return s;

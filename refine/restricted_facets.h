@@ -38,6 +38,7 @@
 #include <delpsc/delaunay/regular_triangulation.h>
 
 #include "domain.h"
+#include "incidence_lists.h"
 
 namespace delpsc::refine {
 
@@ -117,7 +118,6 @@ class RestrictedFacets {
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
   /// The live records incident to vertex v, all patches.
   std::span<const Incidence> incident(PointId v) const {
-    if (v >= by_vertex_.size()) return {};
     return by_vertex_[v];
   }
   /// The live record of largest size, kNoFacet when there is none. Amortised O(log n).
@@ -188,18 +188,18 @@ class RestrictedFacets {
   const delaunay::RegularTriangulation* dt_;
   const Domain* domain_;
   kernel::Box3 box_;  // the domain's, for order_key
-  std::vector<RestrictedFacet> records_;
+  kernel::LargeVector<RestrictedFacet> records_;
   std::vector<std::uint32_t> free_;
   std::size_t live_ = 0;
-  std::vector<std::vector<Incidence>> by_vertex_;
+  IncidenceLists<Incidence> by_vertex_;
   // Per cell slot, per facet index: its records. Indexing by cell facet instead of hashing the
   // vertex triple: the facets to forget are exactly those of the destroyed cells, whose slots
   // still hold the old references when update() runs, so no lookup by vertices is ever needed.
-  std::vector<FacetRef> facet_refs_;
-  std::vector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
+  kernel::LargeVector<FacetRef> facet_refs_;
+  kernel::LargeVector<std::uint32_t> created_mark_;    // per cell slot: the update that created it
   // Per cell slot, whether well_conditioned() found the cell nearly flat (unknown until asked).
   static constexpr std::uint8_t kFlatUnknown = 0, kFlatNo = 1, kFlatYes = 2;
-  mutable std::vector<std::uint8_t> flat_;
+  mutable kernel::LargeVector<std::uint8_t> flat_;
   std::vector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
   std::vector<FacetRef> boundary_refs_;        // scratch: per created cell, its boundary facet's old ref
   std::uint32_t update_epoch_ = 0;

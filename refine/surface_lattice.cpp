@@ -103,12 +103,12 @@ LatticeFrame lattice_frame(const Vec3& normal, const Vec3& point, double step) {
 }
 
 void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, double jitter,
-                      std::vector<Vec3>& out) {
+                      kernel::LargeVector<Vec3>& out) {
   jittered_lattice(lattice_frame((b - a).cross(c - a), a, step), a, b, c, step, jitter, out);
 }
 
 bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
-                      double jitter, std::vector<Vec3>& out, std::size_t* work) {
+                      double jitter, kernel::LargeVector<Vec3>& out, std::size_t* work) {
   if (!frame.valid || !(step > 0) || !std::isfinite(step) || !(jitter >= 0) || !(jitter < step / 2)) return true;
   const Vec3 &u = frame.u, &v = frame.v, &origin = frame.origin;
   const auto in_plane = [&](const Vec3& p) { return Point2{u.dot(p - origin), v.dot(p - origin)}; };

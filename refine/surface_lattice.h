@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::refine {
@@ -57,7 +58,7 @@ LatticeFrame lattice_frame(const Vec3& normal, const Vec3& point, double step);
 /// needle triangle 10^8 steps long costs 10^8 sites for no point). Cost O(1 + area / step² +
 /// perimeter / step).
 bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, double step,
-                      double jitter, std::vector<Vec3>& out, std::size_t* work = nullptr);
+                      double jitter, kernel::LargeVector<Vec3>& out, std::size_t* work = nullptr);
 
 /// Appends to `out` the points of the jittered lattice of step `step` and jitter radius `jitter`
 /// on the plane of triangle (a, b, c) that lie in the closed triangle, as a + u (b - a) + v (c - a)
@@ -65,6 +66,6 @@ bool jittered_lattice(const LatticeFrame& frame, const Vec3& a, const Vec3& b, c
 /// positive and finite, a jitter not in [0, step/2), or a triangle more than 2^50 steps from the
 /// origin. Cost O(1 + area / step² + perimeter / step).
 void jittered_lattice(const Vec3& a, const Vec3& b, const Vec3& c, double step, double jitter,
-                      std::vector<Vec3>& out);
+                      kernel::LargeVector<Vec3>& out);
 
 }  // namespace delpsc::refine

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <delpsc/kernel/large_array.h>
+
 namespace delpsc::refine {
 
 std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles) {
@@ -14,13 +16,13 @@ std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std:
     std::uint32_t triangle, next, after;  // (v, next, after) is the triangle's cyclic order
     std::uint32_t place;                  // v == triangles[triangle][place]
   };
-  std::vector<std::uint32_t> first(vertices.size() + 1, 0);
+  kernel::LargeVector<std::uint32_t> first(vertices.size() + 1, 0);
   for (const auto& t : triangles)
     for (const std::uint32_t v : t) ++first[v + 1];
   for (std::size_t v = 0; v < vertices.size(); ++v) first[v + 1] += first[v];
-  std::vector<Around> around(3 * n);
+  kernel::LargeVector<Around> around(3 * n);
   {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (std::uint32_t t = 0; t < n; ++t)
       for (std::uint32_t k = 0; k < 3; ++k)
         around[fill[triangles[t][k]]++] = {t, triangles[t][(k + 1) % 3], triangles[t][(k + 2) % 3], k};
@@ -31,9 +33,9 @@ std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std:
   // {a, x} is settled once, at its smaller end a, from a's list alone: its users there, grouped
   // by x (the search of a's list per edge and triangle side it replaces was 5.8% of meshing the
   // cube at 0.5%).
-  std::vector<std::array<std::uint32_t, 3>> next(n, {kNone, kNone, kNone});
-  std::vector<std::uint8_t> opposite(n, 0);  // bit k: across edge k, opposite directions
-  std::vector<char> open(n, 0);
+  kernel::LargeVector<std::array<std::uint32_t, 3>> next(n, {kNone, kNone, kNone});
+  kernel::LargeVector<std::uint8_t> opposite(n, 0);  // bit k: across edge k, opposite directions
+  kernel::LargeVector<char> open(n, 0);
   struct Use {
     std::uint32_t other_end, triangle;
     std::uint8_t edge;      // the edge's index in the triangle
@@ -67,9 +69,9 @@ std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std:
   }
   // Breadth-first search per component, deciding which triangles to flip: u keeps t's decision
   // when they already agree across their edge, and takes the other one when they do not.
-  std::vector<std::int8_t> flip(n, -1);  // -1: not reached yet
+  kernel::LargeVector<std::int8_t> flip(n, -1);  // -1: not reached yet
   std::size_t bad = 0;
-  std::vector<std::uint32_t> component, queue;
+  kernel::LargeVector<std::uint32_t> component, queue;
   for (std::uint32_t start = 0; start < n; ++start) {
     if (flip[start] >= 0) continue;
     component.clear();

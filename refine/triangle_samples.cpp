@@ -47,7 +47,7 @@ std::size_t sample_pieces(double length, double h) {
   return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
 }
 
-void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, std::vector<Vec3>& out) {
+void triangle_samples(const Vec3& a0, const Vec3& b0, const Vec3& c0, double h, kernel::LargeVector<Vec3>& out) {
   const RowLayout layout(a0, b0, c0, h);
   for (std::size_t i = 0; i < layout.rows; ++i) {
     const auto [left, right] = layout.row(i);

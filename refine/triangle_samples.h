@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::refine {
@@ -23,7 +24,7 @@ std::size_t sample_pieces(double length, double h);
 /// The samples of triangle abc other than its corners, appended to `out`: every point of the
 /// triangle is within h of one of them or of a corner. O(area / h² + perimeter / h + 1) points;
 /// none for a triangle reduced to a point, a coordinate or h not finite, or h <= 0.
-void triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double h, std::vector<Vec3>& out);
+void triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double h, kernel::LargeVector<Vec3>& out);
 
 /// How many points triangle_samples(a, b, c, h, ...) appends, without making them: O(1 + height
 /// / h) time however long the triangle is, for a caller that must bound its memory first. The

@@ -12,7 +12,7 @@ TEST_CASE("radix_sort_by_key sorts stably by the low key bits, as std::stable_so
   std::mt19937_64 rng(5);
   for (const int key_bits : {8, 21, 42, 63, 64}) {
     for (const std::size_t n : {0, 1, 2, 17, 1000, 70000}) {
-      std::vector<std::pair<std::uint64_t, std::uint32_t>> items(n);
+      kernel::KeyedIndices items(n);
       const std::uint64_t mask = key_bits == 64 ? ~0ull : (1ull << key_bits) - 1;
       for (std::uint32_t i = 0; i < n; ++i) {
         // Few distinct keys (ties, to see stability) sharing some digits (skipped passes), and

@@ -183,7 +183,7 @@ double brute_force_distance(const std::vector<Vec3>& av, const Triangles& a, con
       best = std::min(best, (kernel::closest_point_on_triangle(p, bv[t[0]], bv[t[1]], bv[t[2]]).point - p).norm());
     largest = std::max(largest, best);
   };
-  std::vector<Vec3> samples;
+  kernel::LargeVector<Vec3> samples;
   for (const auto& t : a) {
     samples.assign({av[t[0]], av[t[1]], av[t[2]]});
     refine::triangle_samples(av[t[0]], av[t[1]], av[t[2]], h, samples);
@@ -198,7 +198,7 @@ TEST_CASE("triangle_samples: every point within h of a sample or corner, ~area /
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_real_distribution<double> unit(0, 1);
-  std::vector<Vec3> samples;
+  kernel::LargeVector<Vec3> samples;
   for (int round = 0; round < 300; ++round) {
     Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
     if (round % 3 == 0) c = a + (b - a) * unit(rng) + Vec3(u(rng), u(rng), u(rng)) * 1e-3;  // a needle

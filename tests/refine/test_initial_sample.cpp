@@ -6,6 +6,7 @@
 #include <limits>
 #include <queue>
 #include <random>
+#include <span>
 
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/complex.h>
@@ -26,7 +27,7 @@ double power(const WeightedPoint& w, const Vec3& x) { return (w.point() - x).squ
 // the fixed points and every point chosen before it, and than ball_clearance times the spacing
 // from the balls; every candidate left out is within that of a ball, a fixed point or a chosen
 // point (greedy: nothing it conflicts with is ever dropped, so what rejected it is still there).
-void check_selection(const std::vector<Vec3>& candidates, const std::vector<WeightedPoint>& balls,
+void check_selection(std::span<const Vec3> candidates, const std::vector<WeightedPoint>& balls,
                      const std::vector<Vec3>& fixed, double spacing, const std::vector<std::uint32_t>& chosen,
                      const std::vector<double>& local = {}, double ball_clearance = 1) {
   const auto limit_of = [&](std::size_t i) { return local.empty() ? spacing * spacing : local[i] * local[i]; };
@@ -132,8 +133,8 @@ TEST_CASE("select_separated_points: degenerate input") {
 TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice first, random points near edges, a net") {
   const refine::PolygonDomain domain(io::make_cube(1));  // unit cube, six patches, 12 triangles
   const double spacing = 0.05;
-  std::vector<Vec3> points;
-  std::vector<std::uint32_t> patches;
+  kernel::LargeVector<Vec3> points;
+  kernel::LargeVector<std::uint32_t> patches;
   const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
   const std::size_t cover = parts.lattice;
   REQUIRE(points.size() == patches.size());
@@ -185,11 +186,11 @@ TEST_CASE("PolygonDomain::surface_candidates lie on their patches: a lattice fir
   }
   for (const std::size_t n : per_patch) CHECK(static_cast<double>(n) > 0.1 * static_cast<double>(points.size()));
   // The same points on every call; nothing for a spacing that is not a length.
-  std::vector<Vec3> again;
-  std::vector<std::uint32_t> again_patches;
+  kernel::LargeVector<Vec3> again;
+  kernel::LargeVector<std::uint32_t> again_patches;
   CHECK(domain.surface_candidates(spacing, 1u << 30, again, again_patches).lattice == cover);
   CHECK(again == points);
-  std::vector<Vec3> none;
+  kernel::LargeVector<Vec3> none;
   const auto nothing = [](const refine::CandidateParts& p) { return p.lattice == 0 && p.net == 0 && p.net_radius == 0; };
   CHECK(nothing(domain.surface_candidates(0, 1u << 30, none, again_patches)));
   CHECK(nothing(domain.surface_candidates(std::numeric_limits<double>::quiet_NaN(), 1u << 30, none, again_patches)));
@@ -215,8 +216,8 @@ TEST_CASE("PolygonDomain::surface_candidates bounds the lattice's work by the bu
   soup.vertices = {Vec3(0, 0, 0), Vec3(1e8, 0, 0), Vec3(0, 1e-3, 0)};
   soup.triangles = {{0, 1, 2}};
   const refine::PolygonDomain domain(protect::build_complex(soup));
-  std::vector<Vec3> points;
-  std::vector<std::uint32_t> patches;
+  kernel::LargeVector<Vec3> points;
+  kernel::LargeVector<std::uint32_t> patches;
   const refine::CandidateParts parts = domain.surface_candidates(1.0, 1000000, points, patches);
   CHECK(parts.lattice == 0);
   CHECK(!points.empty());
@@ -228,7 +229,7 @@ TEST_CASE("PolygonDomain::surface_candidates bounds the lattice's work by the bu
 namespace {
 
 // Every point of `probes` within `radius` of a point of `points` (brute force).
-std::size_t uncovered(const std::vector<Vec3>& probes, const std::vector<Vec3>& points, double radius) {
+std::size_t uncovered(std::span<const Vec3> probes, std::span<const Vec3> points, double radius) {
   std::size_t out = 0;
   for (const Vec3& q : probes)
     out += std::none_of(points.begin(), points.end(), [&](const Vec3& p) { return (p - q).norm() <= radius; });
@@ -237,8 +238,8 @@ std::size_t uncovered(const std::vector<Vec3>& probes, const std::vector<Vec3>& 
 
 // PolygonDomain::surface_candidates' output, with no budget in the way.
 struct Candidates {
-  std::vector<Vec3> points;
-  std::vector<std::uint32_t> patches;
+  kernel::LargeVector<Vec3> points;
+  kernel::LargeVector<std::uint32_t> patches;
   refine::CandidateParts parts;
 };
 Candidates candidates_of(const refine::PolygonDomain& domain, double spacing) {
@@ -260,7 +261,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     const Vec3 e1 = Vec3(u(rng), u(rng), u(rng)).normalized();
     const Vec3 e2 = e1.cross(Vec3(u(rng), u(rng), u(rng))).normalized();
     const Vec3 a = origin, b = origin + e1, c = origin + e1 + e2, d = origin + e2;
-    std::vector<Vec3> first, second;
+    kernel::LargeVector<Vec3> first, second;
     refine::jittered_lattice(a, b, c, step, jitter, first);
     refine::jittered_lattice(a, c, d, step, jitter, second);  // the same plane: the same lattice
     // On its triangle (barycentric coordinates in [0, 1] up to rounding), ~0.5 / (√3/2 step²) each.
@@ -275,7 +276,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     CHECK(std::abs(static_cast<double>(first.size()) - expected) < 0.1 * expected);
     // Spaced: at least step - 2 jitter apart, but for the points on the shared diagonal, which
     // both triangles make (the same point up to rounding).
-    std::vector<Vec3> all(first);
+    std::vector<Vec3> all(first.begin(), first.end());
     all.insert(all.end(), second.begin(), second.end());
     std::size_t duplicates = 0;
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -303,12 +304,12 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
   // A triangle's lattice is the plane's lattice clipped to it: a square's two halves together
   // have exactly the points of a big triangle of the same plane that fall in the square.
   {
-    std::vector<Vec3> big, halves;
+    kernel::LargeVector<Vec3> big, halves;
     refine::jittered_lattice(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), step, jitter, big);
     refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), step, jitter, halves);
     refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), step, jitter, halves);
     const auto inside = [](const Vec3& p) { return p.x() > 1e-9 && p.y() > 1e-9 && p.x() < 1 - 1e-9 && p.y() < 1 - 1e-9; };
-    const auto has = [](const std::vector<Vec3>& set, const Vec3& p) {
+    const auto has = [](std::span<const Vec3> set, const Vec3& p) {
       return std::any_of(set.begin(), set.end(), [&](const Vec3& q) { return (q - p).norm() < 1e-12; });
     };
     std::size_t in_square = 0;
@@ -322,7 +323,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     CHECK(in_square > 50);
     // The same square in 2 x 48 x 48 triangles each far smaller than a lattice cell, most of
     // which hold no site (the case may_hold_site skips): together, again exactly those points.
-    std::vector<Vec3> tiny;
+    kernel::LargeVector<Vec3> tiny;
     constexpr int kCells = 48;
     const double h = 1.0 / kCells;
     for (int i = 0; i < kCells; ++i)
@@ -342,7 +343,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     const double angle = 20 * 3.141592653589793 / 180;
     const refine::LatticeFrame frame = refine::lattice_frame(Vec3(0, 0, 1), Vec3(0, 0, 0.3), step);
     const Vec3 a(0, 0, 0.3), b(1, 0, 0.3 + std::tan(angle)), c(0, 1, 0.3);
-    std::vector<Vec3> tilted;
+    kernel::LargeVector<Vec3> tilted;
     refine::jittered_lattice(frame, a, b, c, step, jitter, tilted);
     const Vec3 n = (b - a).cross(c - a).normalized();
     for (const Vec3& p : tilted) {
@@ -366,7 +367,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
   // Parallel planes get different jitters: the lattices of a cube's opposite faces were
   // translates of each other, whose rectangles of co-circular points sent the triangulation's
   // power tests to exact arithmetic.
-  std::vector<Vec3> bottom, top;
+  kernel::LargeVector<Vec3> bottom, top;
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, jitter, bottom);
   refine::jittered_lattice(Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1), step, jitter, top);
   std::size_t translated = 0;
@@ -374,7 +375,7 @@ TEST_CASE("jittered_lattice: on the triangle, spaced, covering, the same across 
     translated += std::any_of(top.begin(), top.end(), [&](const Vec3& q) { return (q - p - Vec3(0, 0, 1)).norm() < 1e-12; });
   CHECK(translated < bottom.size() / 10);
   // Nothing for a degenerate triangle, an impossible step, or a plane too far for the step.
-  std::vector<Vec3> none;
+  kernel::LargeVector<Vec3> none;
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), step, jitter, none);
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 0, 0, none);
   refine::jittered_lattice(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), step, step, none);

@@ -128,8 +128,8 @@ TEST_CASE("rebuild with the initial sample's proven cover skips most queries and
     const double spacing = 0.08, radius = model == 2 ? 0.6 * spacing : 0;
     const std::vector<WeightedPoint> balls =
         model == 2 ? test::unit_cube_edge_balls(spacing, radius) : std::vector<WeightedPoint>{};
-    std::vector<Vec3> points;
-    std::vector<std::uint32_t> patches;
+    kernel::LargeVector<Vec3> points;
+    kernel::LargeVector<std::uint32_t> patches;
     const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
     bool decided = false;
     const auto chosen = refine::select_sample(points, parts, balls, {}, spacing, {}, &decided);
