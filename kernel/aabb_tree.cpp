@@ -136,7 +136,7 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
                    std::span<const std::array<std::uint32_t, 3>> triangles) {
   const auto n = static_cast<std::uint32_t>(triangles.size());
   if (n == 0) return;
-  std::vector<BuildItem> items(n);
+  LargeVector<BuildItem> items(n);
   for (std::uint32_t t = 0; t < n; ++t) {
     const auto& tri = triangles[t];
     const Vec3 c = (vertices[tri[0]] + vertices[tri[1]] + vertices[tri[2]]) / 3.0;
@@ -151,7 +151,7 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
   for (Slot& slot : slots_) slot.plane = plane_filter(slot.corners);
 }
 
-std::uint32_t AabbTree::sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
+std::uint32_t AabbTree::sah_split(LargeVector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
                                   float lo, float hi, int depth, std::span<const Vec3> vertices,
                                   std::span<const std::array<std::uint32_t, 3>> triangles) {
   // Centroids beyond the float range are infinite: no SAH cut then (a median split follows),
@@ -200,7 +200,7 @@ std::uint32_t AabbTree::sah_split(std::vector<BuildItem>& items, std::uint32_t b
   return static_cast<std::uint32_t>(cut - items.begin());
 }
 
-Box3 AabbTree::build_node(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int depth,
+Box3 AabbTree::build_node(LargeVector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int depth,
                           std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   nodes_.push_back({});

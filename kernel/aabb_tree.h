@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "constructions.h"
+#include "large_array.h"
 #include "point.h"
 
 namespace delpsc::kernel {
@@ -159,11 +160,11 @@ class AabbTree {
     std::uint32_t id;
   };
   /// Builds the subtree over items[begin, end) at `depth` (root 0) and returns its exact box.
-  Box3 build_node(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int depth,
+  Box3 build_node(LargeVector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int depth,
                   std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
   /// Partitions items[begin, end) at the binned-SAH cut along `axis` (centroids in [lo, hi]) and
   /// returns the first item of the right part; begin when no SAH split applies.
-  static std::uint32_t sah_split(std::vector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
+  static std::uint32_t sah_split(LargeVector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
                                  float lo, float hi, int depth, std::span<const Vec3> vertices,
                                  std::span<const std::array<std::uint32_t, 3>> triangles);
   struct Plane;
@@ -171,7 +172,7 @@ class AabbTree {
   void intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
                       std::vector<TriangleIntersection>& out) const;
 
-  std::vector<Node> nodes_;
+  LargeVector<Node> nodes_;
   Box3 bounds_;
   /// A triangle's plane as a floating-point filter (plane_filter in the .cpp): normal, offset,
   /// and the error bound's factor and constant.
@@ -184,8 +185,8 @@ class AabbTree {
     std::array<Vec3, 3> corners;
     Plane plane;
   };
-  std::vector<Slot> slots_;
-  std::vector<std::uint32_t> triangle_ids_;     // original id of each slot
+  LargeVector<Slot> slots_;
+  LargeVector<std::uint32_t> triangle_ids_;     // original id of each slot
 };
 
 }  // namespace delpsc::kernel

@@ -26,11 +26,11 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 /// For each triangle and each of its edges k (opposite corner k), a triangle across that edge:
 /// the other one of a manifold edge, the next one around a non-manifold edge (they form a
 /// cycle), kNone on the boundary. O(T log T).
-std::vector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<const Triangle> triangles) {
+kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<const Triangle> triangles) {
   struct HalfEdge {
     std::uint32_t lo, hi, triangle, edge;
   };
-  std::vector<HalfEdge> half;
+  kernel::LargeVector<HalfEdge> half;
   half.reserve(3 * triangles.size());
   std::uint32_t vertex_bound = 0;
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
@@ -42,7 +42,7 @@ std::vector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<const Triang
   sort_edge_records(half, vertex_bound, [](const HalfEdge& x, const HalfEdge& y) {
     return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.triangle < y.triangle;
   });
-  std::vector<std::array<std::uint32_t, 3>> out(triangles.size(), {kNone, kNone, kNone});
+  kernel::LargeVector<std::array<std::uint32_t, 3>> out(triangles.size(), {kNone, kNone, kNone});
   for (std::size_t i = 0; i < half.size();) {
     std::size_t j = i;
     while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
@@ -131,7 +131,7 @@ class FarthestSample {
   std::span<const Vec3> vertices_;
   std::span<const Triangle> to_;
   const kernel::AabbTree& tree_;
-  std::vector<std::array<std::uint32_t, 3>> neighbours_;
+  kernel::LargeVector<std::array<std::uint32_t, 3>> neighbours_;
   std::uint32_t current_ = kNone;
   OneSidedDistance result_;
   double largest_squared_ = 0;  // result_.distance squared

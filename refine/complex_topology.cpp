@@ -12,8 +12,8 @@ namespace {
 // Union-find over dense ids with path halving; `parity` (optional) tracks, for the orientation
 // test, whether an element's orientation is flipped relative to its root.
 struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  std::vector<std::uint8_t> parity;
+  kernel::LargeVector<std::uint32_t> parent;
+  kernel::LargeVector<std::uint8_t> parity;
   explicit UnionFind(std::size_t n) : parent(n), parity(n, 0) {
     for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::uint32_t>(i);
   }
@@ -72,7 +72,7 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
   out.triangles = triangles.size();
   if (triangles.empty()) return out;
   std::uint32_t vertex_bound = 0;
-  std::vector<EdgeUse> uses;
+  kernel::LargeVector<EdgeUse> uses;
   uses.reserve(3 * triangles.size());
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     const auto& v = triangles[t];
@@ -88,9 +88,9 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
 
   UnionFind vertices(vertex_bound);  // components: every triangle joins its vertices
   for (const auto& v : triangles) vertices.join(v[0], v[1]), vertices.join(v[1], v[2]);
-  std::vector<std::uint8_t> used(vertex_bound, 0);
+  kernel::LargeVector<std::uint8_t> used(vertex_bound, 0);
   for (const auto& v : triangles) used[v[0]] = used[v[1]] = used[v[2]] = 1;
-  std::vector<std::uint8_t> is_root(vertex_bound, 0);
+  kernel::LargeVector<std::uint8_t> is_root(vertex_bound, 0);
   for (std::uint32_t x = 0; x < vertex_bound; ++x)
     if (used[x]) ++out.vertices, is_root[vertices.root(x)] = 1;
   out.components = static_cast<std::size_t>(std::count(is_root.begin(), is_root.end(), 1));
@@ -99,7 +99,7 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
   // Two triangles are coherently oriented across an edge when they run along it in opposite
   // directions, so their orientations must differ (relation 1) when they run the same way.
   UnionFind sheets(triangles.size());
-  std::vector<std::uint8_t> conflict(triangles.size(), 0);
+  kernel::LargeVector<std::uint8_t> conflict(triangles.size(), 0);
   std::vector<std::array<std::uint32_t, 2>> boundary, singular;
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
@@ -115,7 +115,7 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
   out.euler = static_cast<long>(out.vertices) - static_cast<long>(out.edges) + static_cast<long>(out.triangles);
   out.boundary_loops = edge_components(boundary, vertex_bound);
   out.singular_curves = edge_components(singular, vertex_bound);
-  std::vector<std::uint8_t> sheet_root(triangles.size(), 0), sheet_conflict(triangles.size(), 0);
+  kernel::LargeVector<std::uint8_t> sheet_root(triangles.size(), 0), sheet_conflict(triangles.size(), 0);
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     const std::uint32_t r = sheets.root(t);
     sheet_root[r] = 1;

@@ -13,20 +13,24 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 namespace delpsc::refine {
 
-/// Sorts `records` (each with a std::uint32_t member `lo`, below `vertex_bound`) into the order
+/// Sorts `records` (a vector of records, each with a std::uint32_t member `lo`, below
+/// `vertex_bound`; any allocator) into the order
 /// std::sort(records, less) gives, for a `less` that orders by `lo` first and is a strict total
 /// order on the records (with ties in `less` the order within them is unspecified, as for
 /// std::sort). Precondition: every lo < vertex_bound.
-template <class Record, class Less>
-void sort_edge_records(std::vector<Record>& records, std::size_t vertex_bound, Less less) {
-  std::vector<std::uint32_t> first(vertex_bound + 1, 0);
+template <class Records, class Less>
+void sort_edge_records(Records& records, std::size_t vertex_bound, Less less) {
+  using Record = typename Records::value_type;
+  kernel::LargeVector<std::uint32_t> first(vertex_bound + 1, 0);
   for (const Record& r : records) ++first[r.lo + 1];
   for (std::size_t v = 0; v < vertex_bound; ++v) first[v + 1] += first[v];
-  std::vector<Record> sorted(records.size());
+  Records sorted(records.size());
   {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (const Record& r : records) sorted[fill[r.lo]++] = r;
   }
   for (std::size_t v = 0; v < vertex_bound; ++v)
