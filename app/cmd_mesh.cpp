@@ -231,9 +231,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (g.verbosity > 0) {
     const refine::MesherStats& s = mesher.stats();
     std::fprintf(stderr,
-                 "delpsc: insertions disk=%zu d34=%zu size=%zu distance=%zu angle=%zu, refused_inside_ball=%zu "
-                 "swallowed=%zu rejected_inaccurate=%zu seeds=%zu sampled=%zu\n",
-                 s.insertions_disk, s.insertions_d34, s.insertions_size, s.insertions_distance, s.insertions_angle,
+                 "delpsc: insertions disk=%zu d34=%zu empty_cell=%zu size=%zu distance=%zu angle=%zu, "
+                 "refused_inside_ball=%zu swallowed=%zu rejected_inaccurate=%zu seeds=%zu sampled=%zu\n",
+                 s.insertions_disk, s.insertions_d34, s.insertions_empty_cell, s.insertions_size, s.insertions_distance,
+                 s.insertions_angle,
                  s.refused_inside_ball, s.swallowed,
                  s.rejected_inaccurate, s.seeds, s.sampled);
   }

@@ -6,6 +6,7 @@
 
 #include <delpsc/kernel/predicates.h>
 
+#include "cell_surface_point.h"
 #include "initial_sample.h"
 
 namespace delpsc::refine {
@@ -239,17 +240,23 @@ bool Mesher::insert_surface_point(std::uint32_t slot) {
     facets_.discard(slot);
     return true;
   }
-  const PointId id = static_cast<PointId>(dt_.number_of_points());
-  places_.push_back(on_patch(r.patch));
-  dt_.insert(WeightedPoint::from(r.point), &changes_, where);
-  if (dt_.status(id) != PointStatus::vertex) {
+  if (!insert_unweighted(r.point, r.patch, where)) {
     // The point is not on V_t after all: the dual edge's ends, orthocentres of nearly flat cells,
-    // were computed too inaccurately in doubles. Forget the point and stop offering this record.
+    // were computed too inaccurately in doubles. Stop offering this record.
     ++stats_.rejected_inaccurate;
+    facets_.discard(slot);
+  }
+  return true;
+}
+
+bool Mesher::insert_unweighted(const Vec3& x, std::uint32_t patch, CellId where) {
+  const PointId id = static_cast<PointId>(dt_.number_of_points());
+  places_.push_back(on_patch(patch));
+  dt_.insert(WeightedPoint::from(x), &changes_, where);
+  if (dt_.status(id) != PointStatus::vertex) {  // hidden: forget it
     dt_.remove(id, &changes_);
     places_[id] = {};
-    facets_.discard(slot);
-    return true;
+    return false;
   }
   apply(changes_, id);
   recheck(id);  // the facets' update names only vertices whose umbrellas changed
@@ -375,6 +382,18 @@ bool Mesher::refine_around(PointId p) {
     return insert_surface_point(best);
   }
   if (big == kNoBallKey) return false;
+  // A ball with an empty umbrella: a surface point of its cell instead of a smaller ball, which
+  // would have the same empty cell one scale down (cell_surface_point.h). At least 1.5 radii out
+  // (power 1.25 r²), so the insertions stay bounded below by the ball's radius.
+  if (own_ball_only && facets_.incident(p).empty()) {
+    const double r = balls_->ball(big).radius;
+    const auto x = surface_point_in_cell(dt_, *domain_, p, 1.25 * r * r,
+                                         [&](std::uint32_t patch) { return disk_.on_patch(p, patch); });
+    if (x && insert_unweighted(x->point, x->patch, dt_.incident_cell(p))) {
+      ++stats_.insertions_empty_cell;
+      return true;
+    }
+  }
   refine_ball(big);
   return true;
 }

@@ -14,11 +14,12 @@
 //       local choice also terminates, but the packing argument of §3 is written for the global
 //       one and is not redone here: max_vertices is the guard. Locally, x is inserted while
 //       d1 >= kLocalBallRatio d2 (below), not d1 >= d2. When p has no usable umbrella
-//       facet and is no ball, the global choice is used. A D3/D4 failure whose facet's point
-//       already proved off V_t (discarded) is handled by the same local step. A D3/D4 facet
-//       whose point lies within √2 radii of a ball vertex off its patch refines that ball
-//       instead (ball_reaching_patch: the termination proof assumes balls keep away from the
-//       patches their curves do not bound; Protect does not ensure it).
+//       facet and is no ball, the global choice is used; a ball p with no restricted facet at
+//       all gets a surface point of its power cell if there is one (cell_surface_point.h). A
+//       D3/D4 failure whose facet's point already proved off V_t (discarded) is handled by the
+//       same local step. A D3/D4 facet whose point lies within √2 radii of a ball vertex off its
+//       patch refines that ball instead (ball_reaching_patch: the termination proof assumes
+//       balls keep away from the patches their curves do not bound; Protect does not ensure it).
 //   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
 //       > sizing(x) -, facet_distance, facet_angle), insert the point x of a worst one (the
 //       worst eighth of an octave of badness, in Morton order within it: RestrictedFacets::worst);
@@ -135,6 +136,7 @@ struct MesherOptions {
 struct MesherStats {
   std::size_t insertions_disk = 0;      ///< step 2(a), D1/D2 failure, d1 >= d2 (locally: kLocalBallRatio d2)
   std::size_t insertions_d34 = 0;       ///< step 2(a), D3/D4 failure
+  std::size_t insertions_empty_cell = 0;  ///< step 2(a), a ball without restricted facets: a point of its cell
   std::size_t insertions_size = 0;      ///< step 2(b), facet_size (or sizing) failed worst
   std::size_t insertions_distance = 0;  ///< step 2(b), facet_distance failed worst
   std::size_t insertions_angle = 0;     ///< step 2(b), facet_angle failed worst
@@ -187,6 +189,9 @@ class Mesher {
   void apply(const delaunay::ChangeSet& changes, PointId inserted);
   void recheck(PointId p);
   bool insert_surface_point(std::uint32_t facet_slot);
+  // Inserts unweighted x on `patch` (walking from `where`); false, and nothing changed, if it
+  // came out hidden.
+  bool insert_unweighted(const Vec3& x, std::uint32_t patch, delaunay::CellId where);
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies

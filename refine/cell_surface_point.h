@@ -1,0 +1,38 @@
+// A surface point inside the power cell of a ball whose umbrella is empty, for step 2(a) of
+// DelPSC (Dey & Levine 2009, §3).
+//
+// A ball vertex p on a curve fails D1 with no restricted triangle at all when the patches cross
+// its power cell without meeting one of the cell's Voronoi edges: the surface piece in the cell
+// is bounded by a loop on one facet (a long thin cell reaching out of the model, or a thin slab
+// between two larger balls). Refining p's ball (the mesher's answer while p has no facet, d1 = -1
+// against d2 = r_p) makes the same configuration one scale down: on libcgal-demo's dino.off the
+// middle ball of a 0.0047-long crease between two corner balls of 0.0016 was refined four times
+// in a row to the balls' floor, at 2%, 1% and 0.5% alike. A point of the surface in the cell
+// cuts it instead.
+//
+// The point: on the segments from p's centre to the orthocentres (Voronoi vertices) of p's finite
+// cells - inside the convex cell when the centre is - the domain hits on the patches `wanted`
+// accepts, at power distance at least min_power from p, that are in p's power cell (exact:
+// kernel::compare_power_distance with every neighbour of p), the one of largest power distance.
+// Such a point is admissible (§2.1): p is its power-nearest vertex and it lies outside p's ball,
+// hence outside every ball; and its power distance to every point of the triangulation is at
+// least min_power, which bounds the insertions from below as the packing argument of §3 needs.
+// Cost: one segment query per cell around p and one exact comparison per neighbour and hit.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include <delpsc/delaunay/regular_triangulation.h>
+
+#include "domain.h"
+
+namespace delpsc::refine {
+
+/// The hit described above, or nullopt (p not a vertex, no such hit).
+std::optional<SurfaceHit> surface_point_in_cell(const delaunay::RegularTriangulation& dt, const Domain& domain,
+                                                delaunay::PointId p, double min_power,
+                                                const std::function<bool(std::uint32_t patch)>& wanted);
+
+}  // namespace delpsc::refine
