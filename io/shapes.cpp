@@ -295,4 +295,17 @@ TriangleSoup make_short_curve_prism(double cut, double spacing) {
                     0.5, spacing);
 }
 
+TriangleSoup make_pleated_sheet(double wedge_degrees, double rise) {
+  require(wedge_degrees > 0 && wedge_degrees < 10 && rise > 0, "make_pleated_sheet: need 0 < wedge < 10 and rise > 0");
+  std::vector<Vec3> boundary;
+  for (const double degrees : {0.0, 45.0, 90.0, 100.0, 100.0 - wedge_degrees, 135.0, 180.0, 225.0, 270.0, 315.0}) {
+    const double a = radians(degrees);
+    const double z = degrees == 100.0 ? rise : degrees == 100.0 - wedge_degrees ? -2 * rise : 0.0;
+    boundary.emplace_back(std::cos(a), std::sin(a), z);
+  }
+  ShapeBuilder b;
+  add_ring_cap(b, Vec3::Zero(), boundary, 3, false);
+  return b.take();
+}
+
 }  // namespace delpsc::io

@@ -89,4 +89,14 @@ TriangleSoup make_crossed_ridges(double gap_fraction = 0.01, int n = 4);
 /// each cap), far shorter than the others when cut is small. 8 / 12 / 6.
 TriangleSoup make_short_curve_prism(double cut = 1e-3, double spacing = 0.1);
 
+/// An open sheet with a pleat, the defect of libcgal-demo's mech-holes-shark.off: a disc of
+/// radius 1 in the plane z = 0 (10 boundary points, 3 rings of triangles fanned around the
+/// origin O) whose boundary runs at 90°, 100°, then back to 100° - `wedge_degrees`, then on at
+/// 135°, the point at 100° lifted by `rise`, the one at 100° - wedge lowered by 2 rise. So the
+/// triangles from O to those two points form a strip turned over (flipped) between two folds,
+/// the surface around O sweeping 360° + 2 wedge and overlapping itself in the wedge, its sheets
+/// there apart by the folds (10.5° for wedge 3.3, rise 0.004), nowhere crossing. The folds are
+/// feature curves. 3 corners / 4 curves / 2 patches.
+TriangleSoup make_pleated_sheet(double wedge_degrees = 3.3, double rise = 0.004);
+
 }  // namespace delpsc::io

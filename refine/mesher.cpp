@@ -377,7 +377,8 @@ bool Mesher::refine_around(PointId p) {
     d1 = r.size;
     best = slot;
   }
-  if (best != kNoFacet && d1 >= kLocalBallRatio * d2) {  // a ball only far above its facets
+  const bool corner = big != kNoBallKey && balls_->ball(big).corner != kNoElement;
+  if (best != kNoFacet && d1 >= (corner ? kLocalCornerBallRatio : kLocalBallRatio) * d2) {  // a ball only far above its facets
     ++stats_.insertions_disk;
     return insert_surface_point(best);
   }

@@ -13,11 +13,11 @@
 //       (D1, D2 hold at p once the triangles and balls near p are small enough) suggests the
 //       local choice also terminates, but the packing argument of §3 is written for the global
 //       one and is not redone here: max_vertices is the guard. Locally, x is inserted while
-//       d1 >= kLocalBallRatio d2 (below), not d1 >= d2. When p has no usable umbrella
-//       facet and is no ball, the global choice is used; a ball p with no restricted facet at
-//       all gets a surface point of its power cell if there is one (cell_surface_point.h). A
-//       D3/D4 failure whose facet's point already proved off V_t (discarded) is handled by the
-//       same local step. A D3/D4 facet whose point lies within √2 radii of a ball vertex off its
+//       d1 >= kLocalBallRatio d2 (below; kLocalCornerBallRatio for a corner ball), not
+//       d1 >= d2. When p has no usable umbrella facet and is no ball, the global choice is used;
+//       a ball p with no restricted facet at all gets a surface point of its power cell if there
+//       is one (cell_surface_point.h). A D3/D4 failure whose facet's point already proved off
+//       V_t (discarded) is handled by the same local step. A D3/D4 facet whose point lies within √2 radii of a ball vertex off its
 //       patch refines that ball instead (ball_reaching_patch: the termination proof assumes
 //       balls keep away from the patches their curves do not bound; Protect does not ensure it).
 //   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
@@ -103,6 +103,18 @@ namespace delpsc::refine {
 /// kLocalBallRatio times the smallest ball radius from the others, so the packing argument
 /// bounds them as before, with the constant divided by 64.
 inline constexpr double kLocalBallRatio = 1.0 / 64;
+
+/// kLocalBallRatio when the ball step 2(a) would refine is a corner ball. A corner ball's
+/// RefineBall is the root of a refinement tree (Lemma 2.5: it halves the ball and re-covers every
+/// curve leaving the corner), and at a pleat - the surface around a corner sweeping more than
+/// 360° and overlapping itself in a wedge of angle θ, its sheets there at angle φ - the disk
+/// condition at the corner needs samples ~sin θ sin φ times the ball's radius apart near its
+/// sphere, the same at every scale: on libcgal-demo's mech-holes-shark.off (a flipped sliver
+/// triangle, θ = 3.3°, folds of 8° and 17.8°) that is 1/125, finer than 1/64, and each shrink of
+/// the corner ball was followed by the same failure one scale down, to the balls' floor. At 1/256
+/// it meshes at 1% and 0.5%; io::make_pleated_sheet is the same defect, generated. The packing
+/// bound of kLocalBallRatio holds with 256 for 64.
+inline constexpr double kLocalCornerBallRatio = 1.0 / 256;
 
 struct MesherOptions {
   double facet_size = 0;          ///< λ of step 2(b), absolute (> 0 unless `sizing` is given)

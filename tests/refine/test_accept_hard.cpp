@@ -34,3 +34,11 @@ TEST_CASE("thin gaps: ridges crossing at 1% and 0.1% of a cube's diagonal") {
 TEST_CASE("a very short curve: cut apex of 1e-3") {
   for (const double size : {0.04, 0.01, 0.005}) check_acceptance("short curve", io::make_short_curve_prism(1e-3, 0.1), size);
 }
+
+// A pleat (io::make_pleated_sheet: a flipped strip between two folds of 10.5°, the surface
+// overlapping itself in a wedge of 3.3° around the corner), mech-holes-shark.off's defect. At 1%
+// with a corner ball refined as soon as its facets were below 1/64 of it, each shrink of the
+// corner ball met the same failure one scale down, to the balls' floor (kLocalCornerBallRatio).
+TEST_CASE("a pleat: a flipped strip between two folds") {
+  check_acceptance("pleat", io::make_pleated_sheet(3.3, 0.004), 0.01);
+}
