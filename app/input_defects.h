@@ -5,9 +5,12 @@
 // dino.off). Wedges of 1° to 10° mesh (the acceptance tests): only a failure names one.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/point.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/folds.h>
@@ -18,7 +21,7 @@ inline constexpr double kDefectDegrees = 15;
 
 /// A sentence naming the defect near `where`, or empty when none is found. O(edges).
 inline std::string input_defect_near(const protect::Complex& complex, const Vec3& where, double lambda) {
-  char text[400] = "";
+  char text[640] = "";
   if (const auto fold = protect::sharpest_fold_near(complex, where, lambda, kDefectDegrees)) {
     const Vec3& a = complex.vertices[complex.edges[fold->edge][0]];
     const Vec3& b = complex.vertices[complex.edges[fold->edge][1]];
@@ -28,10 +31,23 @@ inline std::string input_defect_near(const protect::Complex& complex, const Vec3
                   a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), fold->dihedral_degrees);
   } else if (const auto wedge = protect::narrowest_corner_near(complex, where, lambda, kDefectDegrees)) {
     const Vec3& c = complex.vertices[complex.corner_vertex[wedge->corner]];
+    // How small the balls must get there (folds.h): the corner's ball stays within the nearest
+    // other curve, where the two are this far apart (libcgal-demo's mpi.off: 0.069° and a curve
+    // 0.0145 away, balls of 8.7e-6, 2.5e-7 of the diagonal, below any floor of the caps).
+    char need[200] = "";
+    if (std::isfinite(wedge->clearance)) {
+      kernel::Box3 box;
+      for (const Vec3& p : complex.vertices) box.extend(p);
+      const double half_gap = wedge->clearance * std::sin(wedge->angle_degrees * std::numbers::pi / 360);
+      std::snprintf(need, sizeof need,
+                    "; curve %u passes %.3g from that corner, so its ball stays within that, where the two are %.2g "
+                    "apart: balls of %.2g (%.2g of the bounding-box diagonal) there",
+                    wedge->nearest_curve, wedge->clearance, 2 * half_gap, half_gap, half_gap / (box.hi - box.lo).norm());
+    }
     std::snprintf(text, sizeof text,
-                  "curves %u and %u leave the corner at (%.6g, %.6g, %.6g) only %.2g degrees apart - a needle or a "
+                  "curves %u and %u leave the corner at (%.6g, %.6g, %.6g) only %.2g degrees apart%s - a needle or a "
                   "sliver of the surface between them? repair the model there",
-                  wedge->curves[0], wedge->curves[1], c.x(), c.y(), c.z(), wedge->angle_degrees);
+                  wedge->curves[0], wedge->curves[1], c.x(), c.y(), c.z(), wedge->angle_degrees, need);
   }
   return text;
 }

@@ -69,6 +69,17 @@ std::optional<NarrowCorner> narrowest_corner_near(const Complex& complex, const 
       if (angle < below_degrees && (!best || angle < best->angle_degrees))
         best = NarrowCorner{leaving[i].corner, {leaving[i].curve, leaving[j].curve}, angle};
     }
+  if (!best) return best;
+  // The clearance: feature edges of the curves not ending at the corner.
+  const std::uint32_t v = complex.corner_vertex[best->corner];
+  const auto through = complex.corner_curve_ids(best->corner);
+  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+    const std::uint32_t c = complex.edge_curve[e];
+    if (c == kNoIndex || std::find(through.begin(), through.end(), c) != through.end()) continue;
+    const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
+    const double d = (kernel::closest_point_on_segment(complex.vertices[v], a, b).point - complex.vertices[v]).norm();
+    if (d < best->clearance) best->clearance = d, best->nearest_curve = c;
+  }
   return best;
 }
 

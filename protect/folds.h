@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include <delpsc/kernel/point.h>
@@ -34,6 +35,11 @@ struct NarrowCorner {
   std::uint32_t corner = kNoIndex;                  ///< index into Complex::corner_vertex
   std::uint32_t curves[2] = {kNoIndex, kNoIndex};   ///< the two curves (equal for a loop)
   double angle_degrees = 180;                       ///< between their first edges at the corner
+  /// The nearest curve not through the corner and its distance from it (kNoIndex and infinity
+  /// if there is none). The corner's ball stays within it (C3.b), and where it ends the two
+  /// curves are only about 2 clearance sin(angle / 2) apart: the balls they need there.
+  std::uint32_t nearest_curve = kNoIndex;
+  double clearance = std::numeric_limits<double>::infinity();
 };
 
 /// Among the corners within `radius` of `where`, the pair of feature edges leaving one of them

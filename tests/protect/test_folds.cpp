@@ -50,6 +50,11 @@ TEST_CASE("narrow corners: a wedge's apex, where its legs leave at the wedge's a
     CHECK(wedge.vertices[wedge.corner_vertex[narrow->corner]].norm() < 1e-12);
     CHECK(narrow->curves[0] != narrow->curves[1]);
     CHECK(narrow->angle_degrees == doctest::Approx(angle).epsilon(1e-6));
+    // The nearest curve not through the apex: a leg of the other cap, 1/2 above.
+    REQUIRE(narrow->nearest_curve != protect::kNoIndex);
+    CHECK(narrow->nearest_curve != narrow->curves[0]);
+    CHECK(narrow->nearest_curve != narrow->curves[1]);
+    CHECK(narrow->clearance == doctest::Approx(0.5));
     CHECK_FALSE(protect::narrowest_corner_near(wedge, Vec3::Zero(), 0.01, angle / 2));
     // The radius is respected: the far corners of the wedge (legs of length 1) are 60°+ wide.
     CHECK_FALSE(protect::narrowest_corner_near(wedge, Vec3(1, 0, 0), 0.1, 15));
