@@ -121,7 +121,7 @@ inline constexpr double kSmallestBallOfLambda = 1e-4;
 /// The floor above is never higher than this fraction of the bounding-box diagonal: 1e-4 λ at
 /// λ = 0.5%, so at that size and below nothing changes. The balls a defect of the input needs
 /// have a size of their own, not one that grows with λ, and with 1e-4 λ a coarse size refused
-/// models a fine one meshes (libcgal-demo, BENCHMARKS.md session 19): hand.off's flipped flap
+/// models a fine one meshes (libcgal-demo, BENCHMARKS.md, session 18): hand.off's flipped flap
 /// needs balls of 4.9e-6 (3.2e-6 of its diagonal) at every size and met the floor only at 4%
 /// (4e-6 of the diagonal); mech-holes-shark.off's pleat needs ~8e-7 (5e-7 of the diagonal),
 /// dino.off's corner 5° wide next to another 1.2e-3 away 1.4e-5 in Protect at 4% (2.4e-6).
