@@ -128,6 +128,11 @@ namespace {
 
 /// Polygons with more corners than this are always fanned: ear clipping is quadratic or worse.
 constexpr std::size_t kMostCornersClipped = 500;
+/// A triangle below this shape (add_polygon: about a 3° angle in a triangle of otherwise even
+/// sides) is a sliver worth a second split, by best ears, of a polygon of at most
+/// kMostCornersBestEar corners (O(n^3)).
+constexpr double kPoorShape = 0.1;
+constexpr std::size_t kMostCornersBestEar = 32;
 
 /// 2D cross product of (b - a) and (c - b): > 0 where the boundary turns left at b.
 double turn(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
@@ -141,15 +146,23 @@ double turn(const std::array<double, 2>& a, const std::array<double, 2>& b, cons
 // by ear clipping in its plane (projected along the largest component of its Newell normal),
 // each ear kept in the polygon's order (orientation). Where clipping finds no ear (a polygon
 // that is not simple in projection) the rest is fanned as before.
+//
+// Either can make slivers where corners are nearly in line: libcgal-demo's mpi.off has an 8-gon
+// with four corners on one line within 4e-5 that became triangles of 0.0001° and 0.0006° whose
+// computed normals were off by 64° and 79° - sharp edges, so feature curves, that are not in the
+// model. So when the split has a triangle worse than kPoorShape, a polygon of at most
+// kMostCornersBestEar corners is clipped again taking the best-shaped ear each time, and the
+// split whose worst triangle is better is kept (every other polygon is split as before).
 void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   ++report_.polygons;
   const std::size_t n = indices.size();
   std::vector<std::uint32_t> v(n);
   for (std::size_t i = 0; i < n; ++i) v[i] = file_to_merged_[indices[i]];
-  const auto fan = [&](const std::vector<std::uint32_t>& corners) {
-    for (std::size_t i = 1; i + 1 < corners.size(); ++i) soup_.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  using Triangle = std::array<std::uint32_t, 3>;
+  const auto fan = [](const std::vector<std::uint32_t>& corners, std::vector<Triangle>& out) {
+    for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
   };
-  if (n <= 3 || n > kMostCornersClipped) return fan(v);
+  if (n <= 3 || n > kMostCornersClipped) return fan(v, soup_.triangles);
   const auto& V = soup_.vertices;
   Vec3 normal = Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) normal += V[v[i]].cross(V[v[(i + 1) % n]]);
@@ -163,32 +176,81 @@ void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   for (std::size_t i = 0; i < n; ++i) q[i] = {V[v[i]][u], V[v[i]][w]};
   bool convex = true;
   for (std::size_t i = 0; i < n && convex; ++i) convex = turn(q[(i + n - 1) % n], q[i], q[(i + 1) % n]) >= 0;
-  if (convex) return fan(v);
 
-  std::vector<std::size_t> ring(n);  // the corners left, as positions in v and q
-  for (std::size_t i = 0; i < n; ++i) ring[i] = i;
+  // 4√3 area / (sum of squared sides): 1 for an equilateral triangle, 0 for a degenerate one.
+  const auto shape = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const Vec3 &x = V[v[a]], &y = V[v[b]], &z = V[v[c]];
+    const double sides = (y - x).squaredNorm() + (z - y).squaredNorm() + (x - z).squaredNorm();
+    return sides > 0 ? 2 * std::sqrt(3.0) * (y - x).cross(z - x).norm() / sides : 0.0;
+  };
   const auto inside = [&](const std::array<double, 2>& p, std::size_t a, std::size_t b, std::size_t c) {
     return turn(q[a], q[b], p) >= 0 && turn(q[b], q[c], p) >= 0 && turn(q[c], q[a], p) >= 0;
   };
-  for (std::size_t misses = 0, i = 0; ring.size() > 3 && misses < ring.size();) {
-    const std::size_t m = ring.size();
-    const std::size_t a = ring[(i + m - 1) % m], b = ring[i % m], c = ring[(i + 1) % m];
-    bool ear = turn(q[a], q[b], q[c]) > 0;
-    for (std::size_t k = 0; k < m && ear; ++k) {
-      const std::size_t r = ring[k];
-      if (r != a && r != b && r != c && q[r] != q[a] && q[r] != q[b] && q[r] != q[c]) ear = !inside(q[r], a, b, c);
+  // Ear clipping, as positions in v: the first ear found (retrying the previous corner after a
+  // cut), or the best-shaped ear each time. Returns the worst shape of the triangles made.
+  const auto clip = [&](bool best_ear, std::vector<Triangle>& out) {
+    std::vector<std::size_t> ring(n);  // the corners left
+    for (std::size_t i = 0; i < n; ++i) ring[i] = i;
+    double worst = 1;
+    const auto is_ear = [&](std::size_t i) {
+      const std::size_t m = ring.size();
+      const std::size_t a = ring[(i + m - 1) % m], b = ring[i], c = ring[(i + 1) % m];
+      if (!(turn(q[a], q[b], q[c]) > 0)) return false;
+      for (const std::size_t r : ring)
+        if (r != a && r != b && r != c && q[r] != q[a] && q[r] != q[b] && q[r] != q[c] && inside(q[r], a, b, c))
+          return false;
+      return true;
+    };
+    const auto cut = [&](std::size_t i) {
+      const std::size_t m = ring.size();
+      const std::size_t a = ring[(i + m - 1) % m], b = ring[i], c = ring[(i + 1) % m];
+      out.push_back({v[a], v[b], v[c]});
+      worst = std::min(worst, shape(a, b, c));
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+    };
+    if (best_ear) {
+      while (ring.size() > 3) {
+        std::size_t best = ring.size();
+        double best_shape = -1;
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const std::size_t m = ring.size();
+          const double s = shape(ring[(i + m - 1) % m], ring[i], ring[(i + 1) % m]);
+          if (s > best_shape && is_ear(i)) best = i, best_shape = s;
+        }
+        if (best == ring.size()) break;
+        cut(best);
+      }
+    } else {
+      for (std::size_t misses = 0, i = 0; ring.size() > 3 && misses < ring.size();) {
+        i %= ring.size();
+        if (!is_ear(i)) {
+          i = (i + 1) % ring.size(), ++misses;
+          continue;
+        }
+        cut(i);
+        i = (i + ring.size() - 1) % ring.size(), misses = 0;  // retry the previous corner
+      }
     }
-    if (!ear) {
-      i = (i + 1) % m, ++misses;
-      continue;
-    }
-    soup_.triangles.push_back({v[a], v[b], v[c]});
-    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i % m));
-    i = (i % m + ring.size() - 1) % ring.size(), misses = 0;  // retry the previous corner
+    std::vector<std::uint32_t> rest;
+    for (const std::size_t r : ring) rest.push_back(v[r]);
+    for (std::size_t i = 1; i + 1 < ring.size(); ++i) worst = std::min(worst, shape(ring[0], ring[i], ring[i + 1]));
+    fan(rest, out);
+    return worst;
+  };
+
+  std::vector<Triangle> split;
+  double worst = 1;
+  if (convex) {
+    fan(v, split);
+    for (std::size_t i = 1; i + 1 < n; ++i) worst = std::min(worst, shape(0, i, i + 1));
+  } else {
+    worst = clip(false, split);
   }
-  std::vector<std::uint32_t> rest;
-  for (const std::size_t r : ring) rest.push_back(v[r]);
-  fan(rest);
+  if (worst < kPoorShape && n <= kMostCornersBestEar) {
+    std::vector<Triangle> better;
+    if (clip(true, better) > worst) split.swap(better);
+  }
+  soup_.triangles.insert(soup_.triangles.end(), split.begin(), split.end());
 }
 
 ReadResult SoupBuilder::finish() {
