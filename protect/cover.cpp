@@ -35,8 +35,9 @@ std::vector<BallId> cover(Engine& engine, std::uint32_t curve, const BallOnCurve
   // α of the step leaving from parameter s.
   auto alpha_at = [&](double s) {
     if (!sizes.graded) return sizes.alpha;
-    return std::min({sizes.alpha, sizes.left_limit + sizes.slope * std::max(0.0, s - x),
-                     sizes.right_limit + sizes.slope * std::max(0.0, y - s)});
+    const double graded = std::min({sizes.alpha, sizes.left_limit + sizes.slope * std::max(0.0, s - x),
+                                    sizes.right_limit + sizes.slope * std::max(0.0, y - s)});
+    return sizes.caps ? std::min(graded, sizes.caps->at(s)) : graded;
   };
 
   // Places B(point_at(s), r) after the last ball. Lemma 2.4 puts every centre strictly between

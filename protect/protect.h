@@ -33,13 +33,18 @@
 // shrinks the balls along a curve geometrically. Measured on the cube at λ = 4% of the diagonal,
 // 25 refinements of the largest ball: with α = r_σ/4 the 16th passes 200,000 balls (the 13th
 // alone adds 20,000); graded, they add 4 to 24 balls each.
-//   Graded cover (the default): α_max = r_b/4 (r_b the ball's radius, the smallest in a run;
-// for a neighbour refined only because its vertex ball shrank, the larger of its radius and the
-// vertex ball's new one, refine_ball.cpp), and the α of each step of Cover, read where the step
-// leaves seg(b_i), is
-//     min(α_max, 0.6 r_1 + 0.1 d_σ(x, s), 0.6 r_2 + 0.1 d_σ(s, y)),
-// small next to a small neighbour and growing along the curve. Why it keeps Lemma 2.4 (the
-// derivation on a straight curve; on a winding one the repair below is the judge):
+//   Graded cover (the default): α_max(b) = r_b/4 for each ball b of a run (for a neighbour
+// refined only because its vertex ball shrank, the larger of its radius and the vertex ball's
+// new one, refine_ball.cpp), and the α of each step of Cover, read at the parameter s where the
+// step leaves seg(b_i), is
+//     min(H(s), 0.6 r_1 + 0.1 d_σ(x, s), 0.6 r_2 + 0.1 d_σ(s, y)),
+// small next to a small neighbour and growing along the curve, with
+// H(s) = min_b (α_max(b) + 0.1 d_σ(s, seg(b))) over the run (cap_envelope.h): at most each
+// ball's own α_max on its segment, and growing no faster than the other two terms. (Until
+// session 19 one α_max, the run's smallest, held everywhere: where every ball along a needle
+// meets the other side, that spread the size needed at the tip over the whole needle.)
+// Why it keeps Lemma 2.4 (the derivation on a straight curve; on a winding one the repair
+// below is the judge):
 //  - consecutive balls of radii ρ, ρ' (ρ' the later): the next centre is at arc length at least
 //    ρ + ρ'/3 from the last, so C2 holds for any ratio (ρ + ρ'/3 <= max + 6 min / 7), and C3.a
 //    needs ρ + ρ'/3 >= 8ρ'/7, i.e. ρ'/ρ <= 21/17; the slope 0.1 bounds the ratio by 1 + 0.1 (4/3);
@@ -47,7 +52,9 @@
 //    (r_1 + α/3 >= 8 (7α/6) / 7 iff α <= r_1);
 //  - next to b_2 the 7α/6 end game needs r_2 >= 4α/3 (the curve from that ball's centre to
 //    seg(b_2) may be short); α <= 0.6 r_2 + 0.1 (4α/3) gives α <= 0.69 r_2;
-//  - every new ball is at most 7/6 α_max = 7/24 r_b, Lemma 2.5's factor, so termination holds.
+//  - every new ball is at most 7/6 α_max(b) = 7/24 r_b for a refined ball b whose segment holds
+//    the step's start (the run's segments cover the gap), Lemma 2.5's factor, so termination
+//    holds.
 // The paper's α = r_σ/4 is the special case of a flat size at a quarter of the smallest
 // neighbour. Protect's first cover of a curve (step 2) keeps the paper's α = min(r_u, r_v)
 // unless that is below λ/16; the same derivation holds there, the neighbours being vertex balls.

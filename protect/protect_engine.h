@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "cap_envelope.h"
 #include "protect.h"
 
 namespace delpsc::protect::detail {
@@ -44,11 +45,13 @@ class Engine {
 };
 
 /// The α of a Cover: the paper's one number, or the graded size of protect.h,
-/// min(alpha, left_limit + slope (s - x), right_limit + slope (y - s)) read where each step starts.
+/// min(alpha, left_limit + slope (s - x), right_limit + slope (y - s), caps(s)) read where each
+/// step starts, caps (if given) the envelope of the refined run's own caps (cap_envelope.h).
 struct CoverSizes {
   double alpha = 0;
   bool graded = false;
   double left_limit = 0, right_limit = 0, slope = 0;
+  CapEnvelope* caps = nullptr;
 };
 
 /// The graded size of protect.h between neighbours of radii r_left and r_right, up to alpha:

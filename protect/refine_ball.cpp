@@ -22,6 +22,7 @@
 // refine_ball (protect.h) is RefineBall of one ball followed by Separate.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "protect_engine.h"
@@ -33,8 +34,9 @@ namespace detail {
 namespace {
 
 // Refines the run of consecutive marked interior balls that contains `seed`, unmarking them.
-// `cap[id]` is the graded cover's α_max for a marked ball (the file comment); a run takes the
-// smallest of its balls'.
+// `cap[id]` is the graded cover's α_max for a marked ball (the file comment); along the run each
+// step of Cover is held to the envelope of its balls' caps (cap_envelope.h), under every
+// ball's own cap on its segment, rather than to the smallest cap of the run.
 void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked, const std::vector<double>& cap) {
   BallSet& balls = engine.balls;
   BallId lo = seed, hi = seed;
@@ -47,18 +49,25 @@ void refine_run(Engine& engine, BallId seed, std::vector<bool>& marked, const st
   const std::uint32_t curve = balls[seed].curve;
   const BallOnCurve left = balls.before(lo), right = balls.after(hi);
   double r_run = balls[lo].radius;  // the smallest radius in the run
-  double alpha_max = cap[lo];
+  double alpha_max = 0;             // the largest cap: the envelope below bounds each place
+  std::vector<CapEnvelope::Piece> pieces;
   for (BallId id = lo;; id = balls[id].next) {
     r_run = std::min(r_run, balls[id].radius);
-    alpha_max = std::min(alpha_max, cap[id]);
+    alpha_max = std::max(alpha_max, cap[id]);
+    const CurveInterval seg = balls.segment_on(curve, {id, balls[id].s});
+    pieces.push_back({seg.s0, std::max(seg.s0, seg.s1), cap[id]});
     if (id == hi) break;
   }
   const double r_left = balls[left.id].radius, r_right = balls[right.id].radius;
   CoverSizes sizes;
-  if (engine.options.graded_cover)
+  std::optional<CapEnvelope> caps;
+  if (engine.options.graded_cover) {
     sizes = graded_cover_sizes(alpha_max, r_left, r_right);
-  else
+    caps.emplace(std::move(pieces), sizes.slope);
+    sizes.caps = &*caps;
+  } else {
     sizes.alpha = std::min({r_run, r_left, r_right}) / 4;  // r_σ / 4
+  }
   for (BallId id = lo, stop = balls[hi].next; id != stop;) {
     const BallId next = balls[id].next;
     marked[id] = false;

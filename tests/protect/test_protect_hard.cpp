@@ -85,6 +85,45 @@ TEST_CASE("small angles: wedges of 10, 5, 2 and 1 degrees") {
   }
 }
 
+TEST_CASE("a needle: curves 0.1 degrees apart along a length 100 times the corner ball") {
+  // A flat wedge (height 0.01, legs of length 1): the apex ball is a third of the height, and
+  // the two legs of each cap stay within 2 sin(0.05°) s of each other at distance s from the
+  // apex, so the balls along them must grow with s, as on libcgal-demo's mpi.off (0.069°, a
+  // 4-unit needle). Balls of the size needed next to the apex all along would be ~10^6; graded,
+  // a leg needs some ln(length / apex ball) / sin(0.05°) balls.
+  const double angle = 0.1, half = angle * std::numbers::pi / 360, height = 0.01;
+  const protect::Complex complex = protect::build_complex(
+      io::make_prism({{0, 0}, {std::cos(half), -std::sin(half)}, {std::cos(half), std::sin(half)}}, height, 0.1));
+  REQUIRE(complex.corner_count() == 6);
+  const double diagonal = BallSet(complex).diagonal();
+  for (const double fraction : {0.04, 0.01}) {
+    CAPTURE(fraction);
+    protect::ProtectStats stats;
+    const BallSet balls = protect::protect(complex, fraction * diagonal, protect::ProtectOptions{}, &stats);
+    const protect::BallCheck check = protect::check_balls(balls);
+    for (const auto& p : check.problems) INFO(p);
+    CHECK(check.ok());
+    // Balls of radius about a quarter of the gap, centres 4/3 of a radius apart.
+    const double legs = 4, per_leg = 1.5 * std::log(1 / (height / 3)) / std::sin(half);
+    CAPTURE(balls.size());
+    CHECK(balls.size() < 1.5 * legs * per_leg);
+    // Along each leg the balls grow from the apex: the largest far above the smallest.
+    int legs_seen = 0;
+    for (std::uint32_t c = 0; c < complex.curve_count(); ++c) {
+      if (complex.curves[c].length < 0.5) continue;
+      ++legs_seen;
+      double lo = HUGE_VAL, hi = 0;
+      for (const protect::BallOnCurve& b : balls.curve_sequence(c))
+        if (!balls[b.id].is_corner()) {
+          lo = std::min(lo, balls[b.id].radius);
+          hi = std::max(hi, balls[b.id].radius);
+        }
+      CHECK(hi > 30 * lo);
+    }
+    CHECK(legs_seen == 4);
+  }
+}
+
 TEST_CASE("close curves: ridges crossing at 1% and 0.1% of a cube's diagonal") {
   for (const double gap : {0.01, 0.001}) {
     CAPTURE(gap);
