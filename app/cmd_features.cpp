@@ -36,6 +36,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
 
   report("triangles", complex.triangles.size());
   report("zero_area_triangles", complex.cleanup.zero_area_triangles.size());
+  report("flat_caps", complex.cleanup.flat_caps.size());
   report("corners", complex.corner_vertex.size());
   report("curves", complex.curves.size());
   report("closed_curves", complex.closed_curve_count());
@@ -83,7 +84,7 @@ Runner register_features(CLI::App& app) {
   app.add_option("--preview", o->preview,
                  "Draw the complex to an SVG picture: patches coloured and shaded, curves and corners dark");
   app.footer(
-      "Prints key=value lines: triangles, zero_area_triangles, corners, curves, closed_curves, "
+      "Prints key=value lines: triangles, zero_area_triangles, flat_caps (triangles with an angle within 1e-4 radians of 180 degrees, split away like zero-area ones), corners, curves, closed_curves, "
       "patches, patches_without_boundary, pinched_vertices (where a patch touches itself only at a vertex), seconds.\n\nExample:\n"
       "  delpsc features fandisk.off --angle 60 -o fandisk-features.vtu\n"
       "  delpsc features samples/part.off --preview part-features.svg");

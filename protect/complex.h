@@ -8,6 +8,9 @@
 //     which would open a fake boundary along a-b: the triangle (a, b, x) across its long edge is
 //     split at c into (a, c, x) and (c, b, x), the classic cap removal by an edge flip. The split
 //     covers exactly the same surface, so geometry is unchanged and the T-junction is healed.
+//     A "flat cap", a triangle whose largest angle is within 1e-4 radians of 180°, is healed the
+//     same way (the surface moves by its height): its two long edges would otherwise be curves
+//     leaving a corner at an angle no ball size can separate.
 //  2. edge_table.cpp: unique undirected edges, their incident triangles, each triangle's edges.
 //  3. feature_edges.cpp: an edge is a feature when it is a boundary edge (1 triangle), a
 //     non-manifold edge (3 or more), a manifold edge whose two triangle normals make an angle
@@ -105,6 +108,10 @@ struct CleanupReport {
   std::vector<std::uint32_t> zero_area_triangles;  ///< soup indices, increasing
   std::size_t split_triangles = 0;  ///< triangles split at a cap's middle vertex (edge flips)
   std::size_t dropped_caps = 0;  ///< caps that could not be flipped (long edge not shared by exactly one other triangle)
+  /// soup indices, increasing: triangles whose largest angle is within 1e-4 radians of 180°,
+  /// healed as caps (kept as they are where their long edge is not shared by exactly one other
+  /// triangle)
+  std::vector<std::uint32_t> flat_caps;
 };
 
 class Complex {

@@ -79,7 +79,37 @@ struct Cap {
   std::uint32_t source;      // soup index
   std::uint32_t a, mid, b;   // mid strictly between a and b
   bool resolved = false;
+  bool flat = false;         // not exactly collinear: kept as it is if it cannot be healed
 };
+
+// A triangle whose largest angle is within this many radians (0.0057°) of 180° is healed like
+// an exactly collinear cap: a numerical accident, not a shape. libcgal-demo's mpi_triang.off has
+// one (its two small angles 2.6e-6 and 1.9e-6, its height 2e-5 over an edge of 14; the next
+// flattest triangles' small angles are ~1e-3), and mpi.off's 8-gon, nearly flat with four corners
+// nearly in line, has one in every split (small angles 1.2e-5 and 2.6e-6): their two long edges
+// are sharp edges leaving a corner 0.00015° apart, which balls of 6e-10 of the diagonal would
+// have to separate. Splitting the triangle across its long edge moves the surface by its height.
+// (A needle - one short edge, one tiny angle - is not a cap: flipping its long edge would only
+// move the needle.)
+constexpr double kFlatCapRadians = 1e-4;
+
+// The vertex (0, 1, 2) opposite the longest edge when the triangle is a flat cap (its two angles
+// at the ends of the longest edge, height / distance to each end, summing below kFlatCapRadians),
+// else -1. That vertex projects strictly inside the longest edge (the other two angles are acute).
+int flat_cap_middle(const std::array<Vec3, 3>& p) {
+  int longest = 0;
+  double longest2 = -1;
+  for (int k = 0; k < 3; ++k) {
+    const double l2 = (p[(k + 2) % 3] - p[(k + 1) % 3]).squaredNorm();
+    if (l2 > longest2) {
+      longest2 = l2;
+      longest = k;
+    }
+  }
+  const double height = (p[1] - p[0]).cross(p[2] - p[0]).norm() / std::sqrt(longest2);
+  const double to_a = (p[(longest + 1) % 3] - p[longest]).norm(), to_b = (p[(longest + 2) % 3] - p[longest]).norm();
+  return height / to_a + height / to_b < kFlatCapRadians ? longest : -1;
+}
 
 }  // namespace
 
@@ -118,6 +148,11 @@ std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex
       complex.cleanup.zero_area_triangles.push_back(t);
       const int m = middle_of_collinear(p);
       caps.push_back({t, tri[(m + 1) % 3], tri[m], tri[(m + 2) % 3]});
+      continue;
+    }
+    if (const int m = flat_cap_middle(p); m >= 0) {
+      complex.cleanup.flat_caps.push_back(t);
+      caps.push_back({t, tri[(m + 1) % 3], tri[m], tri[(m + 2) % 3], false, true});
       continue;
     }
     tris.push_back(tri);
@@ -185,8 +220,15 @@ std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex
     }
     if (!progress) break;
   }
-  for (const Cap& cap : caps)
-    if (!cap.resolved) ++complex.cleanup.dropped_caps;
+  for (const Cap& cap : caps) {
+    if (cap.resolved) continue;
+    if (cap.flat) {  // a real triangle: dropping it would open a hole
+      tris.push_back({cap.a, cap.b, cap.mid});
+      source.push_back(cap.source);
+    } else {
+      ++complex.cleanup.dropped_caps;
+    }
+  }
   std::sort(complex.cleanup.zero_area_triangles.begin(), complex.cleanup.zero_area_triangles.end());
 
   complex.triangles = std::move(tris);

@@ -48,10 +48,11 @@ std::optional<Shared> find_shared_edge(const io::TriangleSoup& s, Accept accept)
 
 // Puts a zero-area cap between t1 and t2 along their edge a-b: t2 is split at the edge's
 // midpoint c into two triangles, and the cap (b, a, c) fills the gap, a T-junction as mesh
-// repair tools and STL exporters leave them. Returns the cap's index.
-std::uint32_t insert_cap(io::TriangleSoup& s, const Shared& e) {
+// repair tools and STL exporters leave them. Returns the cap's index. With an `offset`, c is
+// moved off the edge by it: a cap of non-zero area.
+std::uint32_t insert_cap(io::TriangleSoup& s, const Shared& e, const Vec3& offset = Vec3::Zero()) {
   const auto c = static_cast<std::uint32_t>(s.vertices.size());
-  s.vertices.push_back((s.vertices[e.a] + s.vertices[e.b]) / 2);  // exact on the dyadic grids used
+  s.vertices.push_back((s.vertices[e.a] + s.vertices[e.b]) / 2 + offset);  // exact on the dyadic grids used
   auto& t2 = s.triangles[e.t2];
   std::uint32_t y = 0;
   for (auto v : t2)
@@ -88,6 +89,31 @@ TEST_CASE("a zero-area cap inside a flat sheet is healed, not turned into a hole
   CHECK(after.cleanup.split_triangles == 1);
   CHECK(after.cleanup.dropped_caps == 0);
   CHECK(after.triangles.size() == s.triangles.size());  // one cap out, one split triangle in
+}
+
+TEST_CASE("a flat cap (height 1e-7 of its edge, out of the sheet) is healed like a zero-area one") {
+  for (const double height : {1e-7, 1e-4}) {
+    CAPTURE(height);
+    io::TriangleSoup s = io::make_square_sheet(4);
+    const Complex before = build_complex(s);
+    const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
+    REQUIRE(e);
+    const double length = (s.vertices[e->a] - s.vertices[e->b]).norm();
+    // Standing up out of the plane, the cap's normal is nearly perpendicular to the sheet's: kept,
+    // its three edges are sharp and make curves the sheet does not have.
+    const std::uint32_t cap = insert_cap(s, *e, Vec3(0, 0, height * length));
+    const Complex after = build_complex(s);
+    CHECK(after.cleanup.zero_area_triangles.empty());
+    if (height < 1e-5) {
+      check_same_complex(after, before);
+      CHECK(after.cleanup.flat_caps == std::vector<std::uint32_t>{cap});
+      CHECK(after.cleanup.split_triangles == 1);
+      CHECK(after.triangles.size() == s.triangles.size());
+    } else {
+      CHECK(after.cleanup.flat_caps.empty());
+      CHECK(after.curve_count() > before.curve_count());
+    }
+  }
 }
 
 TEST_CASE("a zero-area cap along a cube edge keeps the edge one curve") {
