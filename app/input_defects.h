@@ -33,7 +33,7 @@ inline std::string input_defect_near(const protect::Complex& complex, const Vec3
     const Vec3& c = complex.vertices[complex.corner_vertex[wedge->corner]];
     // How small the balls must get there (folds.h): the corner's ball stays within the nearest
     // other curve, where the two are this far apart (libcgal-demo's mpi.off: 0.069° and a curve
-    // 0.0145 away, balls of 8.7e-6, 2.5e-7 of the diagonal, below any floor of the caps).
+    // 0.0145 away, balls of 8.7e-6, 2.5e-7 of the diagonal).
     char need[200] = "";
     if (std::isfinite(wedge->clearance)) {
       kernel::Box3 box;

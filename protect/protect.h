@@ -125,16 +125,17 @@ struct ProtectOptions {
 /// λ = 2% where this floor stops it after 1 s. The acceptance tests mesh every test model with it.
 inline constexpr double kSmallestBallOfLambda = 1e-4;
 
-/// The floor above is never higher than this fraction of the bounding-box diagonal: 1e-4 λ at
-/// λ = 0.5%, so at that size and below nothing changes. The balls a defect of the input needs
-/// have a size of their own, not one that grows with λ, and with 1e-4 λ a coarse size refused
-/// models a fine one meshes (libcgal-demo, BENCHMARKS.md, session 18): hand.off's flipped flap
-/// needs balls of 4.9e-6 (3.2e-6 of its diagonal) at every size and met the floor only at 4%
-/// (4e-6 of the diagonal); mech-holes-shark.off's pleat needs ~8e-7 (5e-7 of the diagonal),
-/// dino.off's corner 5° wide next to another 1.2e-3 away 1.4e-5 in Protect at 4% (2.4e-6).
-/// What the floor is there for still holds: a runaway ends at most 8 times deeper at 4% than
-/// before, and mpi.off's Protect (curves 3e-5 apart) still stops within a second or two.
-inline constexpr double kSmallestBallOfDiagonal = 5e-7;
+/// The floor above is never higher than this fraction of the bounding-box diagonal. The balls
+/// a defect of the input needs have a size of their own, not one that grows with λ, and with
+/// 1e-4 λ a coarse size refused models a fine one meshes (libcgal-demo, BENCHMARKS.md, session
+/// 18): hand.off's flipped flap needs balls of 4.9e-6 (3.2e-6 of its diagonal) at every size;
+/// mech-holes-shark.off's pleat ~8e-7 (5e-7 of the diagonal); dino.off's corner 5° wide next to
+/// another 1.2e-3 away 1.4e-5 in Protect at 4% (2.4e-6). Session 18 set 5e-7; mpi.off, two
+/// curves leaving a corner 0.069° apart whose ball another curve 0.0145 away keeps small, needs
+/// balls of 6e-7 (1.7e-8 of its diagonal) at λ = 0.5%, and meshes at every size with 1e-8, its
+/// Protect ending in 1-2 s with 75,000-99,000 balls. What the floor is there for still holds: a
+/// runaway stops, some six halvings deeper than at 5e-7.
+inline constexpr double kSmallestBallOfDiagonal = 1e-8;
 
 /// `base` with the floor above for balls at size λ on a model whose bounding box has diagonal
 /// `diagonal`, min(kSmallestBallOfLambda λ, kSmallestBallOfDiagonal diagonal) (never lower

@@ -113,7 +113,7 @@ inline constexpr double kLocalBallRatio = 1.0 / 64;
 /// triangle, θ = 3.3°, folds of 8° and 17.8°) that is 1/125, finer than 1/64, and each shrink of
 /// the corner ball was followed by the same failure one scale down, to the balls' floor. At 1/256
 /// it meshes at 1% and 0.5% (at 2% and 4% too, with the floor of protect::options_for_size at
-/// most 5e-7 of the diagonal); io::make_pleated_sheet is the same defect, generated. The packing
+/// most 5e-7 of the diagonal, since session 19 1e-8); io::make_pleated_sheet is the same defect, generated. The packing
 /// bound of kLocalBallRatio holds with 256 for 64.
 inline constexpr double kLocalCornerBallRatio = 1.0 / 256;
 

@@ -16,7 +16,7 @@ all=0
 if [ "${1:-}" = "--all" ]; then all=1; shift; fi
 models=("$@")
 if [ ${#models[@]} -eq 0 ]; then
-  models=(fandisk part anchor joint elephant cube sphere helmet triceratops boeing cheese dino hand)
+  models=(fandisk part anchor joint elephant cube sphere helmet triceratops boeing cheese dino hand mpi mpi_triang)
 fi
 
 missing=$all

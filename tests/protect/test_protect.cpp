@@ -218,9 +218,9 @@ TEST_CASE("protect: the floor for a size stops balls 10^4 times below it, naming
   const double diagonal = BallSet(wedge).diagonal();
   check_protection(protect::protect(wedge, 0.05 * diagonal, protect::options_for_size(0.05 * diagonal, diagonal)),
                    0.05 * diagonal);
-  // Corners 1e-6 apart on a model of diagonal ~1.7 need balls ~3e-7, below the floor at λ = 4%
-  // (5e-7 of the diagonal, under 1e-4 λ).
-  const protect::Complex cut = protect::build_complex(frustum(5e-7));
+  // Corners 1e-8 apart on a model of diagonal ~1.7 need balls ~3e-9, below the floor at λ = 4%
+  // (1e-8 of the diagonal, under 1e-4 λ).
+  const protect::Complex cut = protect::build_complex(frustum(5e-9));
   const double d = BallSet(cut).diagonal();
   try {
     protect::protect(cut, 0.04 * d, protect::options_for_size(0.04 * d, d));
@@ -231,11 +231,11 @@ TEST_CASE("protect: the floor for a size stops balls 10^4 times below it, naming
     CHECK(what.find(" at (") != std::string::npos);
     CHECK(what.find(" passes ") != std::string::npos);  // the nearest other curve, and how far
   }
-  // 1e-4 λ up to 5e-7 of the diagonal (λ = 0.5%), that above. (Relative comparisons: Approx's
+  // 1e-4 λ up to 1e-8 of the diagonal (λ = 0.01%), that above. (Relative comparisons: Approx's
   // default scale of 1 would take any two numbers this small for equal.)
-  CHECK(protect::options_for_size(0.04 * d, d).min_radius_fraction / 5e-7 == doctest::Approx(1));
-  CHECK(protect::options_for_size(0.005 * d, d).min_radius_fraction / 5e-7 == doctest::Approx(1));
-  CHECK(protect::options_for_size(0.001 * d, d).min_radius_fraction / 1e-7 == doctest::Approx(1));
+  CHECK(protect::options_for_size(0.04 * d, d).min_radius_fraction / 1e-8 == doctest::Approx(1));
+  CHECK(protect::options_for_size(0.001 * d, d).min_radius_fraction / 1e-8 == doctest::Approx(1));
+  CHECK(protect::options_for_size(1e-5 * d, d).min_radius_fraction / 1e-9 == doctest::Approx(1));
   CHECK(protect::options_for_size(1e-12, 1).min_radius_fraction == protect::ProtectOptions{}.min_radius_fraction);
 }
 
