@@ -28,7 +28,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
   if (!o.preview.empty()) check_preview_path(o.preview);
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
-  const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
+  const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (complex.triangles.empty())

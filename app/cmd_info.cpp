@@ -23,7 +23,8 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
-  const protect::Complex complex = load_complex(model, o.input, o.angle, protect::ComplexOptions{}.corner_angle_degrees);
+  const protect::Complex complex =
+      load_complex(model, o.input, o.angle, protect::ComplexOptions{}.corner_angle_degrees, g);
   std::size_t boundary = 0, non_manifold = 0;
   for (std::size_t e = 0; e < complex.edges.size(); ++e) {
     boundary += (complex.edge_feature[e] & protect::kBoundaryEdge) != 0;

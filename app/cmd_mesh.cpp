@@ -82,7 +82,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("features");
   const auto t0 = Clock::now();
   // The domain's tree serves the input checks too (a second tree was ~5% of meshing fandisk at 2%).
-  const refine::PolygonDomain domain(load_complex(model, o.input, o.angle, o.corner_angle));
+  const refine::PolygonDomain domain(load_complex(model, o.input, o.angle, o.corner_angle, g));
   reject_self_intersections(domain.complex(), domain.tree(), o.input);
   if (domain.complex().triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};

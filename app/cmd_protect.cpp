@@ -104,7 +104,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   if (!o.vtu_path.empty() && !ends_with_vtu(o.vtu_path))
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
   const io::ReadResult model = load_model(o.input, g);
-  protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle);
+  protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input);
   if (complex.triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to protect"};

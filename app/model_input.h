@@ -34,17 +34,25 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
 
 /// The piecewise smooth complex of a model read by load_model, with the feature and corner
 /// angles of the command line; a bad user polyline or similar becomes a bad-input exit naming
-/// the file.
-inline protect::Complex load_complex(const io::ReadResult& model, const std::string& path,
-                                     double feature_angle, double corner_angle) {
+/// the file. Flat caps healed on the way (protect::CleanupReport) are a warning unless -q: the
+/// surface meshed differs from the file's by their heights.
+inline protect::Complex load_complex(const io::ReadResult& model, const std::string& path, double feature_angle,
+                                     double corner_angle, const GlobalOptions& g) {
   protect::ComplexOptions options;
   options.feature_angle_degrees = feature_angle;
   options.corner_angle_degrees = corner_angle;
+  protect::Complex complex;
   try {
-    return protect::build_complex(model.soup, options);
+    complex = protect::build_complex(model.soup, options);
   } catch (const std::invalid_argument& e) {
     throw Failure{kBadInput, path + ": " + e.what()};
   }
+  if (!g.quiet && !complex.cleanup.flat_caps.empty())
+    std::fprintf(stderr,
+                 "delpsc: warning: %s: %zu nearly flat triangle(s) (an angle within 1e-4 rad of 180 degrees; the "
+                 "first is triangle %u, counted after splitting polygons) split away like zero-area ones\n",
+                 path.c_str(), complex.cleanup.flat_caps.size(), complex.cleanup.flat_caps.front());
+  return complex;
 }
 
 /// At most this many self-intersecting pairs are looked for (info reports ">= this" as this).

@@ -30,6 +30,15 @@ expect 0 "" -- features "$TMP/cube.off" --preview "$TMP/cube.svg"
 grep -q "8 corners, 12 curves, 6 patches" "$TMP/cube.svg" || fail "preview title lacks the counts"
 expect 2 "SVG" -- features "$TMP/cube.off" --preview "$TMP/cube.png"
 expect 2 "no such directory" -- features "$TMP/cube.off" --preview "$TMP/no-such-dir/cube.svg"
+# A flat cap: triangle 1 (0, 2, 4) rises 1e-7 above the sheet's diagonal (angles of 1.4e-7 rad at
+# its ends). Healed, the sheet stays one flat patch with its 4 boundary curves, and the command
+# says so on stderr (not under -q); kept, it would stand upright with three sharp edges.
+printf 'OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1e-7\n3 0 1 2\n3 0 2 4\n3 4 2 3\n3 0 4 3\n' >"$TMP/flat-cap.off"
+expect 0 "1 nearly flat triangle(s)" -- features "$TMP/flat-cap.off"
+[[ "$(value flat_caps)" == "1" && "$(value patches)" == "1" && "$(value curves)" == "4" ]] \
+  || fail "flat cap: flat_caps=$(value flat_caps) patches=$(value patches) curves=$(value curves)"
+expect 0 "" -- -q features "$TMP/flat-cap.off"
+if grep -q "flat triangle" "$TMP/err"; then fail "-q still warns of the flat cap"; else pass; fi
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- features "$TMP/crossing.off"
 finish
