@@ -70,15 +70,25 @@ std::optional<NarrowCorner> narrowest_corner_near(const Complex& complex, const 
         best = NarrowCorner{leaving[i].corner, {leaving[i].curve, leaving[j].curve}, angle};
     }
   if (!best) return best;
-  // The clearance: feature edges of the curves not ending at the corner.
-  const std::uint32_t v = complex.corner_vertex[best->corner];
+  // The clearance: the nearest curve not ending at the corner.
   const auto through = complex.corner_curve_ids(best->corner);
+  if (const auto near = nearest_curve_except(complex, complex.vertices[complex.corner_vertex[best->corner]],
+                                             {through.begin(), through.end()})) {
+    best->nearest_curve = near->curve;
+    best->clearance = near->distance;
+  }
+  return best;
+}
+
+std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3& where,
+                                              std::span<const std::uint32_t> excluded) {
+  std::optional<NearCurve> best;
   for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
     const std::uint32_t c = complex.edge_curve[e];
-    if (c == kNoIndex || std::find(through.begin(), through.end(), c) != through.end()) continue;
+    if (c == kNoIndex || std::find(excluded.begin(), excluded.end(), c) != excluded.end()) continue;
     const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
-    const double d = (kernel::closest_point_on_segment(complex.vertices[v], a, b).point - complex.vertices[v]).norm();
-    if (d < best->clearance) best->clearance = d, best->nearest_curve = c;
+    const double d = (kernel::closest_point_on_segment(where, a, b).point - where).norm();
+    if (d > 0 && (!best || d < best->distance)) best = NearCurve{c, d};
   }
   return best;
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 
 #include <delpsc/kernel/point.h>
 #include <delpsc/protect/complex.h>
@@ -47,5 +48,18 @@ struct NarrowCorner {
 /// sharpest_fold_near. O(edges + corners).
 std::optional<NarrowCorner> narrowest_corner_near(const Complex& complex, const Vec3& where, double radius,
                                                   double below_degrees);
+
+/// A curve passing near a point: its id and its distance.
+struct NearCurve {
+  std::uint32_t curve = kNoIndex;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+/// The feature curve nearest to `where`, at a distance above zero, among those not in
+/// `excluded`, or nullopt if there is none: the gap that forces balls small there, for messages
+/// (Protect's failure at its floor, narrowest_corner_near's clearance). Rounded arithmetic, a
+/// diagnostic. O(edges).
+std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3& where,
+                                              std::span<const std::uint32_t> excluded);
 
 }  // namespace delpsc::protect

@@ -5,14 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <optional>
 #include <string>
-#include <utility>
 
 #include <nanoflann.hpp>
 
-#include <delpsc/kernel/constructions.h>
-
+#include "folds.h"
 #include "protect_engine.h"
 
 namespace delpsc::protect {
@@ -27,26 +24,6 @@ Engine::Engine(BallSet& b, const ProtectOptions& l, ProtectStats& s)
       first_new_id_(static_cast<BallId>(b.id_bound())),
       min_radius_(l.min_radius_fraction * b.diagonal()) {}
 
-namespace {
-
-// The nearest point to `where` of a curve other than `curve` (kNoIndex: any curve), at distance
-// above zero (the curves through a corner at `where` do not count): what the caps' message
-// names, the gap that needed balls that small. O(edges); only on failure.
-std::optional<std::pair<std::uint32_t, double>> nearest_other_curve(const Complex& complex, const Vec3& where,
-                                                                    std::uint32_t curve) {
-  std::optional<std::pair<std::uint32_t, double>> best;
-  for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
-    const std::uint32_t c = complex.edge_curve[e];
-    if (c == kNoIndex || c == curve) continue;
-    const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
-    const double d = (kernel::closest_point_on_segment(where, a, b).point - where).norm();
-    if (d > 0 && (!best || d < best->second)) best = std::pair{c, d};
-  }
-  return best;
-}
-
-}  // namespace
-
 void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) const {
   char message[520];
   if (balls.size() >= options.max_balls)
@@ -55,10 +32,11 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
                   "closer together, or meeting at smaller angles, than the size asked for can resolve?",
                   options.max_balls, where.x(), where.y(), where.z());
   else {
-    const auto other = nearest_other_curve(complex, where, curve);
+    // The nearest other curve (the ball's own does not count; any, for a corner ball).
+    const std::uint32_t own[] = {curve};
+    const auto other = nearest_curve_except(complex, where, curve == kNoIndex ? std::span<const std::uint32_t>{} : own);
     char gap[120] = "";
-    if (other)
-      std::snprintf(gap, sizeof gap, " (curve %u passes %.3g from it)", other->first, other->second);
+    if (other) std::snprintf(gap, sizeof gap, " (curve %u passes %.3g from it)", other->curve, other->distance);
     std::snprintf(message, sizeof message,
                   "protection stopped: a ball of radius %.3g at (%.6g, %.6g, %.6g), below the cap of %.3g "
                   "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there%s?",
