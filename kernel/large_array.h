@@ -10,8 +10,15 @@
 // cube at 0.456% of the diagonal, faults fell from ~21,000 to ~4,000 and the CPU time of the
 // whole pipeline by ~40%, user time as much as system time (BENCHMARKS.md, "Huge pages").
 //
-// Cost: a large block's size is rounded up to a multiple of 2 MiB (at most 2 MiB more per
-// array); small blocks come from operator new as before.
+// Blocks from 4 KiB to 1 MiB come from a pool of 2 MiB huge-page chunks, so that the many
+// arrays of a small run (a few thousand vertices: each array tens of KiB) do not fault in their
+// pages one by one: on the virtual machines we run on a 4 KiB fault costs ~11 us, a whole 2 MiB
+// huge page ~160 us. The pool keeps one free list per power-of-two size and reuses freed blocks
+// (a growing vector's old blocks serve the next one); it returns its chunks to the system when no
+// pooled block is live, but one (BENCHMARKS.md, "Session 20: a pool for mid-sized arrays").
+//
+// Cost: a pooled block takes the next power of two of its size; a block above 1 MiB is rounded up
+// to a multiple of 2 MiB (at most 2 MiB more per array). Below 4 KiB, operator new as before.
 #pragma once
 
 #include <cstddef>
@@ -20,14 +27,15 @@
 
 namespace delpsc::kernel {
 
-/// Blocks of at least this many bytes are huge-page aligned and advised.
-/// Below 256 KiB a block would waste most of its huge page; above, the faults it saves outweigh
-/// the zeroing of the rest (256 KiB against 1 MiB: the cube at 0.456% -5%, fandisk at 2% -8%).
-inline constexpr std::size_t kLargeBlockBytes = std::size_t{256} << 10;
+/// Blocks from this size up to kPoolMaxBytes come from the huge-page pool.
+inline constexpr std::size_t kPoolMinBytes = std::size_t{4} << 10;
+/// Blocks above this size get their own huge-page-aligned, advised mapping.
+inline constexpr std::size_t kPoolMaxBytes = std::size_t{1} << 20;
 /// The huge page size the blocks are aligned to (x86-64 and arm64 with 4 KiB base pages).
 inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 
 /// `bytes` of storage aligned for any type; throws std::bad_alloc. O(1) plus the system's cost.
+/// Thread-safe (the pool takes a lock).
 void* allocate_large(std::size_t bytes);
 /// Frees what allocate_large(bytes) returned, with the same `bytes`.
 void deallocate_large(void* p, std::size_t bytes) noexcept;

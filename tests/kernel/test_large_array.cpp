@@ -1,21 +1,28 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <numeric>
+#include <random>
 #include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include <delpsc/kernel/large_array.h>
 
 using namespace delpsc;
 
 TEST_CASE("allocate_large: large blocks aligned to huge pages, small ones usable, contents kept") {
-  for (const std::size_t bytes : {std::size_t{1}, std::size_t{4096}, kernel::kLargeBlockBytes - 1, kernel::kLargeBlockBytes,
-                                  kernel::kHugePageBytes + 1, 3 * kernel::kHugePageBytes}) {
+  for (const std::size_t bytes :
+       {std::size_t{1}, kernel::kPoolMinBytes - 1, kernel::kPoolMinBytes, kernel::kPoolMinBytes + 1, kernel::kPoolMaxBytes,
+        kernel::kPoolMaxBytes + 1, kernel::kHugePageBytes + 1, 3 * kernel::kHugePageBytes}) {
     auto* p = static_cast<unsigned char*>(kernel::allocate_large(bytes));
     REQUIRE(p != nullptr);
     CHECK(reinterpret_cast<std::uintptr_t>(p) % alignof(std::max_align_t) == 0);
-    if (bytes >= kernel::kLargeBlockBytes) CHECK(reinterpret_cast<std::uintptr_t>(p) % kernel::kHugePageBytes == 0);
+    if (bytes >= kernel::kPoolMinBytes) CHECK(reinterpret_cast<std::uintptr_t>(p) % kernel::kPoolMinBytes == 0);
+    if (bytes > kernel::kPoolMaxBytes) CHECK(reinterpret_cast<std::uintptr_t>(p) % kernel::kHugePageBytes == 0);
     for (std::size_t i = 0; i < bytes; i += 997) p[i] = static_cast<unsigned char>(i);
     p[bytes - 1] = 7;
     bool kept = p[bytes - 1] == 7;
@@ -24,6 +31,62 @@ TEST_CASE("allocate_large: large blocks aligned to huge pages, small ones usable
     kernel::deallocate_large(p, bytes);
   }
   kernel::deallocate_large(nullptr, 12345);  // a no-op, as free(nullptr)
+}
+
+namespace {
+
+// Allocates `count` pooled blocks of random sizes, fills each with its own pattern, and checks
+// that they do not overlap and that every pattern survives the others' writes; frees them in
+// random order. Returns false on the first fault found.
+bool pooled_blocks_are_disjoint_and_kept(std::uint32_t seed, int count) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::size_t> size(kernel::kPoolMinBytes, kernel::kPoolMaxBytes);
+  std::vector<std::pair<unsigned char*, std::size_t>> blocks;
+  for (int i = 0; i < count; ++i) {
+    const std::size_t bytes = i % 3 == 0 ? size(rng) : size(rng) / 64 + kernel::kPoolMinBytes;
+    auto* p = static_cast<unsigned char*>(kernel::allocate_large(bytes));
+    std::fill(p, p + bytes, static_cast<unsigned char>(i * 7 + 1));
+    blocks.emplace_back(p, bytes);
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const auto [p, bytes] = blocks[i];
+    ok = ok && std::all_of(p, p + bytes, [&](unsigned char c) { return c == static_cast<unsigned char>(i * 7 + 1); });
+  }
+  std::vector<std::pair<unsigned char*, std::size_t>> sorted = blocks;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i) ok = ok && sorted[i - 1].first + sorted[i - 1].second <= sorted[i].first;
+  std::shuffle(blocks.begin(), blocks.end(), rng);
+  for (const auto& [p, bytes] : blocks) kernel::deallocate_large(p, bytes);
+  return ok;
+}
+
+}  // namespace
+
+TEST_CASE("allocate_large: pooled blocks are disjoint, keep their contents, and are reused") {
+  CHECK(pooled_blocks_are_disjoint_and_kept(1, 300));  // ~50 MiB: many chunks
+  CHECK(pooled_blocks_are_disjoint_and_kept(2, 40));   // after every chunk but one went back
+
+  // A freed block serves the next request of its size class (the pool's point: no new pages).
+  void* keep = kernel::allocate_large(5000);  // keeps the pool from releasing its chunks
+  void* a = kernel::allocate_large(6000);
+  kernel::deallocate_large(a, 6000);
+  void* b = kernel::allocate_large(8192);  // same class as 6000 (8 KiB)
+  CHECK(b == a);
+  kernel::deallocate_large(b, 8192);
+  kernel::deallocate_large(keep, 5000);
+
+  // Threads allocating and freeing at once.
+  std::vector<int> ok(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([t, &ok] {
+      bool all = true;
+      for (int round = 0; round < 20; ++round) all = all && pooled_blocks_are_disjoint_and_kept(100 * t + round, 30);
+      ok[t] = all;
+    });
+  for (std::thread& thread : threads) thread.join();
+  CHECK(std::count(ok.begin(), ok.end(), 1) == 4);
 }
 
 TEST_CASE("LargeVector behaves as std::vector through growth past the large-block size") {
