@@ -27,7 +27,7 @@ Complex build_complex(const io::TriangleSoup& soup, const ComplexOptions& option
     throw std::invalid_argument("build_complex: the corner angle must be >= 0 degrees");
   Complex complex;
   complex.options = options;
-  const std::vector<std::uint32_t> canonical = detail::clean_triangles(soup, complex);
+  const kernel::LargeVector<std::uint32_t> canonical = detail::clean_triangles(soup, complex);
   detail::build_edge_table(complex);
   detail::classify_feature_edges(complex, canonical);
   const detail::VertexFans fans = detail::find_patches(complex);

@@ -11,7 +11,7 @@ namespace delpsc::protect::detail {
 
 /// Reads the soup; writes vertices, triangles, triangle_source, cleanup. Returns the canonical
 /// (welded) index of every soup vertex. (triangle_cleanup.cpp)
-std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex& complex);
+kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex& complex);
 
 /// Reads triangles; writes edges, triangle_edges, edge_triangle_offsets, edge_triangles.
 /// (edge_table.cpp)
@@ -22,16 +22,16 @@ std::uint32_t find_edge(const Complex& complex, std::uint32_t u, std::uint32_t v
 
 /// Reads triangles, edges, options (polylines mapped through `canonical`); writes edge_feature.
 /// (feature_edges.cpp)
-void classify_feature_edges(Complex& complex, const std::vector<std::uint32_t>& canonical);
+void classify_feature_edges(Complex& complex, const kernel::LargeVector<std::uint32_t>& canonical);
 
 /// Triangles around each vertex grouped two ways: into fans connected through non-feature edges
 /// ("wedges", the vertices of the patches cut open along their features) and into fans
 /// connected through any edge ("sheets"; more than one means separate sheets touch only at
 /// the vertex). (patches.cpp)
 struct VertexFans {
-  std::vector<std::uint32_t> corner_wedge;   ///< wedge of corner (t, k), index 3 t + k
+  kernel::LargeVector<std::uint32_t> corner_wedge;   ///< wedge of corner (t, k), index 3 t + k
   std::uint32_t wedge_count = 0;
-  std::vector<std::uint32_t> vertex_sheets;  ///< number of sheets at each vertex
+  kernel::LargeVector<std::uint32_t> vertex_sheets;  ///< number of sheets at each vertex
 };
 
 /// Reads triangles, edges, edge_feature; writes triangle_patch and the patch list's triangles
@@ -68,10 +68,10 @@ class UnionFind {
   }
 
  private:
-  std::vector<std::uint32_t> parent_;
+  kernel::LargeVector<std::uint32_t> parent_;
 };
 
 /// Builds CSR offsets from per-item counts (offsets[i+1] - offsets[i] = counts[i]).
-std::vector<std::uint32_t> offsets_from_counts(const std::vector<std::uint32_t>& counts);
+kernel::LargeVector<std::uint32_t> offsets_from_counts(std::span<const std::uint32_t> counts);
 
 }  // namespace delpsc::protect::detail

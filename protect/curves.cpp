@@ -13,8 +13,8 @@ std::uint32_t other_end(const Complex& complex, std::uint32_t e, std::uint32_t v
   return complex.edges[e][0] == v ? complex.edges[e][1] : complex.edges[e][0];
 }
 
-std::vector<std::uint32_t> patches_along(const Complex& complex, std::uint32_t e) {
-  std::vector<std::uint32_t> p;
+kernel::LargeVector<std::uint32_t> patches_along(const Complex& complex, std::uint32_t e) {
+  kernel::LargeVector<std::uint32_t> p;
   for (const auto t : complex.edge_triangle_ids(e)) p.push_back(complex.triangle_patch[t]);
   std::sort(p.begin(), p.end());
   return p;
@@ -27,16 +27,16 @@ void find_corners_and_curves(Complex& complex, const VertexFans& fans) {
   const auto n_edges = static_cast<std::uint32_t>(complex.edges.size());
 
   // Feature edges around each vertex (CSR, increasing edge order).
-  std::vector<std::uint32_t> degree(n_vertices, 0);
+  kernel::LargeVector<std::uint32_t> degree(n_vertices, 0);
   for (std::uint32_t e = 0; e < n_edges; ++e)
     if (complex.edge_feature[e] != 0) {
       ++degree[complex.edges[e][0]];
       ++degree[complex.edges[e][1]];
     }
-  const std::vector<std::uint32_t> start = offsets_from_counts(degree);
-  std::vector<std::uint32_t> around(start.back());
+  const kernel::LargeVector<std::uint32_t> start = offsets_from_counts(degree);
+  kernel::LargeVector<std::uint32_t> around(start.back());
   {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::uint32_t e = 0; e < n_edges; ++e)
       if (complex.edge_feature[e] != 0) {
         around[fill[complex.edges[e][0]]++] = e;

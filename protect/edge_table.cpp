@@ -9,8 +9,8 @@
 
 namespace delpsc::protect::detail {
 
-std::vector<std::uint32_t> offsets_from_counts(const std::vector<std::uint32_t>& counts) {
-  std::vector<std::uint32_t> offsets(counts.size() + 1, 0);
+kernel::LargeVector<std::uint32_t> offsets_from_counts(std::span<const std::uint32_t> counts) {
+  kernel::LargeVector<std::uint32_t> offsets(counts.size() + 1, 0);
   for (std::size_t i = 0; i < counts.size(); ++i) offsets[i + 1] = offsets[i] + counts[i];
   return offsets;
 }
@@ -20,14 +20,14 @@ void build_edge_table(Complex& complex) {
   const auto n_vertices = complex.vertices.size();
   const auto n_half = static_cast<std::uint32_t>(3 * tris.size());
 
-  std::vector<std::uint32_t> counts(n_vertices, 0);
+  kernel::LargeVector<std::uint32_t> counts(n_vertices, 0);
   for (const auto& t : tris)
     for (int k = 0; k < 3; ++k) ++counts[std::min(t[(k + 1) % 3], t[(k + 2) % 3])];
-  std::vector<std::uint32_t> start = offsets_from_counts(counts);
+  const kernel::LargeVector<std::uint32_t> start = offsets_from_counts(counts);
   // (larger vertex, half-edge 3 t + k), bucketed by the smaller vertex
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> half(n_half);
+  kernel::LargeVector<std::pair<std::uint32_t, std::uint32_t>> half(n_half);
   {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::uint32_t t = 0; t < tris.size(); ++t)
       for (std::uint32_t k = 0; k < 3; ++k) {
         const std::uint32_t a = tris[t][(k + 1) % 3], b = tris[t][(k + 2) % 3];

@@ -19,12 +19,12 @@ bool runs_from(const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint
 
 }  // namespace
 
-void classify_feature_edges(Complex& complex, const std::vector<std::uint32_t>& canonical) {
+void classify_feature_edges(Complex& complex, const kernel::LargeVector<std::uint32_t>& canonical) {
   const double angle = complex.options.feature_angle_degrees;
   // Angle between normals > threshold  <=>  cosine < cos(threshold).
   const double cos_threshold = std::cos(angle * std::numbers::pi / 180);
 
-  std::vector<Vec3> normal(complex.triangles.size());
+  kernel::LargeVector<Vec3> normal(complex.triangles.size());
   for (std::size_t t = 0; t < complex.triangles.size(); ++t) {
     const auto& tri = complex.triangles[t];
     const Vec3 n = (complex.vertices[tri[1]] - complex.vertices[tri[0]])

@@ -16,10 +16,10 @@ namespace {
 // corners (that cost ~20% of build_complex on a 1M-triangle cube, bench_complex).
 // `wedge_vertex`, `wedge_patch`: each wedge's vertex and patch.
 template <class CornerAt>
-void find_pinches(Complex& complex, const VertexFans& fans, const std::vector<std::uint32_t>& wedge_vertex,
-                  const std::vector<std::uint32_t>& wedge_patch, CornerAt corner_at) {
+void find_pinches(Complex& complex, const VertexFans& fans, const kernel::LargeVector<std::uint32_t>& wedge_vertex,
+                  const kernel::LargeVector<std::uint32_t>& wedge_patch, CornerAt corner_at) {
   // A vertex with one wedge has one fan: with no vertex of more, nothing to find.
-  std::vector<std::uint8_t> fan_count(complex.vertices.size(), 0);  // saturates at 2
+  kernel::LargeVector<std::uint8_t> fan_count(complex.vertices.size(), 0);  // saturates at 2
   bool several = false;
   for (const std::uint32_t v : wedge_vertex) {
     several |= fan_count[v] > 0;
@@ -41,7 +41,7 @@ void find_pinches(Complex& complex, const VertexFans& fans, const std::vector<st
   }
   // Two roots at one vertex with the same patch: a pinch. Only the roots at vertices with more
   // than one wedge are collected and sorted.
-  std::vector<std::array<std::uint32_t, 2>> fan_roots;  // (vertex, patch), one per fan
+  kernel::LargeVector<std::array<std::uint32_t, 2>> fan_roots;  // (vertex, patch), one per fan
   for (std::uint32_t w = 0; w < fans.wedge_count; ++w)
     if (fan_count[wedge_vertex[w]] > 1 && patch_fans.find(w) == w) fan_roots.push_back({wedge_vertex[w], wedge_patch[w]});
   std::sort(fan_roots.begin(), fan_roots.end());
@@ -59,7 +59,7 @@ VertexFans find_patches(Complex& complex) {
   // depth-first search from the smallest unlabelled triangle, so ids follow triangle order.
   complex.triangle_patch.assign(n_tris, kNoIndex);
   std::uint32_t patch_count = 0;
-  std::vector<std::uint32_t> stack;
+  kernel::LargeVector<std::uint32_t> stack;
   for (std::uint32_t seed = 0; seed < n_tris; ++seed) {
     if (complex.triangle_patch[seed] != kNoIndex) continue;
     complex.triangle_patch[seed] = patch_count;
@@ -79,12 +79,12 @@ VertexFans find_patches(Complex& complex) {
     ++patch_count;
   }
   complex.patches.assign(patch_count, Patch{});
-  std::vector<std::uint32_t> counts(patch_count, 0);
+  kernel::LargeVector<std::uint32_t> counts(patch_count, 0);
   for (const auto p : complex.triangle_patch) ++counts[p];
   complex.patch_triangle_offsets = offsets_from_counts(counts);
   complex.patch_triangles.resize(n_tris);
   {
-    std::vector<std::uint32_t> fill(complex.patch_triangle_offsets.begin(), complex.patch_triangle_offsets.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(complex.patch_triangle_offsets.begin(), complex.patch_triangle_offsets.end() - 1);
     for (std::uint32_t t = 0; t < n_tris; ++t) complex.patch_triangles[fill[complex.triangle_patch[t]]++] = t;
   }
 
@@ -113,7 +113,7 @@ VertexFans find_patches(Complex& complex) {
   VertexFans fans;
   fans.vertex_sheets.assign(complex.vertices.size(), 0);
   fans.corner_wedge.assign(n_corners, kNoIndex);
-  std::vector<std::uint32_t> wedge_vertex, wedge_patch;
+  kernel::LargeVector<std::uint32_t> wedge_vertex, wedge_patch;
   wedge_vertex.reserve(complex.vertices.size());
   wedge_patch.reserve(complex.vertices.size());
   for (std::uint32_t c = 0; c < n_corners; ++c) {
@@ -141,7 +141,7 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
   // placed wherever these change along a polyline, so any edge of the curve gives the same.)
   complex.curve_patch_offsets.assign(1, 0);
   complex.curve_patches.clear();
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> patch_curve;  // (patch, curve)
+  kernel::LargeVector<std::pair<std::uint32_t, std::uint32_t>> patch_curve;  // (patch, curve)
   for (std::uint32_t c = 0; c < n_curves; ++c) {
     const auto poly = complex.curve_polyline(c);
     const std::uint32_t e = find_edge(complex, poly[0], poly[1]);
@@ -153,7 +153,7 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
   }
   std::sort(patch_curve.begin(), patch_curve.end());
   {
-    std::vector<std::uint32_t> counts(n_patches, 0);
+    kernel::LargeVector<std::uint32_t> counts(n_patches, 0);
     for (const auto& pc : patch_curve) ++counts[pc.first];
     complex.patch_curve_offsets = offsets_from_counts(counts);
     complex.patch_curves.clear();
@@ -162,14 +162,14 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
 
   // Corners -> curves, once per curve end, in curve order.
   {
-    std::vector<std::uint32_t> counts(n_corners, 0);
+    kernel::LargeVector<std::uint32_t> counts(n_corners, 0);
     for (const auto& curve : complex.curves) {
       ++counts[curve.start_corner];
       ++counts[curve.end_corner];
     }
     complex.corner_curve_offsets = offsets_from_counts(counts);
     complex.corner_curves.assign(complex.corner_curve_offsets.back(), kNoIndex);
-    std::vector<std::uint32_t> fill(complex.corner_curve_offsets.begin(), complex.corner_curve_offsets.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(complex.corner_curve_offsets.begin(), complex.corner_curve_offsets.end() - 1);
     for (std::uint32_t c = 0; c < n_curves; ++c) {
       complex.corner_curves[fill[complex.curves[c].start_corner]++] = c;
       complex.corner_curves[fill[complex.curves[c].end_corner]++] = c;
@@ -177,14 +177,14 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
   }
 
   // Corners <-> patches: the patches of the triangles at the corner's vertex.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> corner_patch;
+  kernel::LargeVector<std::pair<std::uint32_t, std::uint32_t>> corner_patch;
   for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
     for (const auto v : complex.triangles[t])
       if (complex.vertex_corner[v] != kNoIndex) corner_patch.push_back({complex.vertex_corner[v], complex.triangle_patch[t]});
   std::sort(corner_patch.begin(), corner_patch.end());
   corner_patch.erase(std::unique(corner_patch.begin(), corner_patch.end()), corner_patch.end());
   {
-    std::vector<std::uint32_t> counts(n_corners, 0), pcounts(n_patches, 0);
+    kernel::LargeVector<std::uint32_t> counts(n_corners, 0), pcounts(n_patches, 0);
     for (const auto& kp : corner_patch) {
       ++counts[kp.first];
       ++pcounts[kp.second];
@@ -194,7 +194,7 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
     for (const auto& kp : corner_patch) complex.corner_patches.push_back(kp.second);
     complex.patch_corner_offsets = offsets_from_counts(pcounts);
     complex.patch_corners.assign(complex.patch_corner_offsets.back(), kNoIndex);
-    std::vector<std::uint32_t> fill(complex.patch_corner_offsets.begin(), complex.patch_corner_offsets.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(complex.patch_corner_offsets.begin(), complex.patch_corner_offsets.end() - 1);
     for (const auto& kp : corner_patch) complex.patch_corners[fill[kp.second]++] = kp.first;  // corner order
   }
 
@@ -204,8 +204,8 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
   // triangles. Boundary loops are the components of the graph of boundary edges on wedges: on
   // the cut surface every boundary wedge has exactly two boundary edges, so components are
   // cycles.
-  std::vector<std::int64_t> chi(n_patches, 0);
-  std::vector<std::uint32_t> wedge_patch(fans.wedge_count, kNoIndex);
+  kernel::LargeVector<std::int64_t> chi(n_patches, 0);
+  kernel::LargeVector<std::uint32_t> wedge_patch(fans.wedge_count, kNoIndex);
   for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
     const std::uint32_t p = complex.triangle_patch[t];
     ++chi[p];  // F
@@ -213,7 +213,7 @@ void link_incidences(Complex& complex, const VertexFans& fans) {
   }
   for (const auto p : wedge_patch) ++chi[p];  // V
   UnionFind loops(fans.wedge_count);
-  std::vector<char> on_boundary(fans.wedge_count, 0);
+  kernel::LargeVector<char> on_boundary(fans.wedge_count, 0);
   for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
     const auto faces = complex.edge_triangle_ids(e);
     if (complex.edge_feature[e] == 0) {

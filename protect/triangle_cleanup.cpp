@@ -23,12 +23,12 @@ std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) {
 // Canonical index of each vertex: the smallest index with exactly the same coordinates (-0 and
 // +0 equal). Open addressing with linear probing on the coordinates' bits, table at most half
 // full: O(V) expected, several times faster than sorting at a million vertices.
-std::vector<std::uint32_t> weld(const std::vector<Vec3>& vertices, std::size_t& welded) {
+kernel::LargeVector<std::uint32_t> weld(std::span<const Vec3> vertices, std::size_t& welded) {
   const auto n = static_cast<std::uint32_t>(vertices.size());
-  std::vector<std::uint32_t> canonical(n);
+  kernel::LargeVector<std::uint32_t> canonical(n);
   std::size_t slots = 16;
   while (slots < 2 * static_cast<std::size_t>(n)) slots *= 2;
-  std::vector<std::uint32_t> table(slots, kNoIndex);
+  kernel::LargeVector<std::uint32_t> table(slots, kNoIndex);
   auto hash = [](const Vec3& p) {
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for (int i = 0; i < 3; ++i) {
@@ -113,7 +113,7 @@ int flat_cap_middle(const std::array<Vec3, 3>& p) {
 
 }  // namespace
 
-std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex& complex) {
+kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex& complex) {
   const auto vertex_count = soup.vertices.size();
   if (vertex_count >= kNoIndex) throw std::invalid_argument("build_complex: more than 2^32 - 2 vertices");
   if (soup.triangles.size() >= kNoIndex) throw std::invalid_argument("build_complex: more than 2^32 - 2 triangles");
@@ -126,12 +126,12 @@ std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex
         throw std::invalid_argument("build_complex: triangle " + std::to_string(t) + " refers to vertex " +
                                     std::to_string(v) + " of " + std::to_string(vertex_count));
 
-  complex.vertices = soup.vertices;
-  const std::vector<std::uint32_t> canonical = weld(soup.vertices, complex.cleanup.welded_vertices);
+  complex.vertices.assign(soup.vertices.begin(), soup.vertices.end());
+  const kernel::LargeVector<std::uint32_t> canonical = weld(soup.vertices, complex.cleanup.welded_vertices);
 
-  std::vector<std::array<std::uint32_t, 3>> tris;
-  std::vector<std::uint32_t> source;
-  std::vector<Cap> caps;
+  kernel::LargeVector<std::array<std::uint32_t, 3>> tris;
+  kernel::LargeVector<std::uint32_t> source;
+  kernel::LargeVector<Cap> caps;
   tris.reserve(soup.triangles.size());
   source.reserve(soup.triangles.size());
   for (std::uint32_t t = 0; t < soup.triangles.size(); ++t) {
@@ -193,7 +193,7 @@ std::vector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex
         if (it != uses.end()) ++it->second.count;
       }
     }
-    std::vector<char> split_now(tris.size(), 0);
+    kernel::LargeVector<char> split_now(tris.size(), 0);
     bool progress = false;
     for (Cap& cap : caps) {
       if (cap.resolved) continue;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include <delpsc/io/shapes.h>
@@ -33,15 +34,15 @@ constexpr double kTiny = 1e-12;  // rounding of closest points on unit-sized mod
 /// mesher would write them: the output that approximates the input perfectly.
 io::SurfaceMesh mesh_of(const protect::Complex& c) {
   io::SurfaceMesh m;
-  m.vertices = c.vertices;
-  m.triangles = c.triangles;
+  m.vertices.assign(c.vertices.begin(), c.vertices.end());
+  m.triangles.assign(c.triangles.begin(), c.triangles.end());
   for (const auto p : c.triangle_patch) m.triangle_patch.push_back(static_cast<std::int32_t>(p));
   for (std::size_t e = 0; e < c.edges.size(); ++e)
     if (c.edge_curve[e] != protect::kNoIndex) {
       m.edges.push_back(c.edges[e]);
       m.edge_curve.push_back(static_cast<std::int32_t>(c.edge_curve[e]));
     }
-  m.corners = c.corner_vertex;
+  m.corners.assign(c.corner_vertex.begin(), c.corner_vertex.end());
   return m;
 }
 
@@ -170,12 +171,12 @@ TEST_CASE("the farthest point inside a triangle: sampled within h, and by the gr
 
 namespace {
 
-using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+using Triangles = std::span<const std::array<std::uint32_t, 3>>;
 
 /// The documented surface sampling of A (each used vertex, each triangle's triangle_samples),
 /// every sample measured against every triangle of B.
-double brute_force_distance(const std::vector<Vec3>& av, const Triangles& a, const std::vector<Vec3>& bv,
-                            const Triangles& b, double h) {
+double brute_force_distance(std::span<const Vec3> av, Triangles a, std::span<const Vec3> bv,
+                            Triangles b, double h) {
   double largest = 0;
   const auto measure_sample = [&](const Vec3& p) {
     double best = std::numeric_limits<double>::infinity();
