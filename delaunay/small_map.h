@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 namespace delpsc::delaunay::detail {
 
 class SmallMap {
@@ -79,9 +81,9 @@ class SmallMap {
     for (std::size_t i = 0; i < keys.size(); ++i) insert(keys[i], values[i]);
   }
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<std::uint32_t> values_;
-  std::vector<std::uint32_t> epochs_;
+  kernel::LargeVector<std::uint64_t> keys_;
+  kernel::LargeVector<std::uint32_t> values_;
+  kernel::LargeVector<std::uint32_t> epochs_;
   std::uint32_t epoch_ = 0;
   std::size_t mask_ = 0;
   int shift_ = 64;

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <delpsc/kernel/large_array.h>
+
 #include "error.h"
 #include "model_parsers.h"
 
@@ -22,21 +24,25 @@ std::string lower_extension(const std::string& path) {
 
 /// The whole file in memory: every parser then works on one contiguous buffer, and the binary
 /// ones can check counts against the exact size before allocating.
-std::string read_file(const std::string& path) {
+// The whole file, read straight into a LargeVector (huge pages: a model of megabytes is not
+// faulted in page by page, kernel/large_array.h).
+kernel::LargeVector<char> read_file(const std::string& path) {
   check_input_file(path, "model file");
   std::error_code ec;
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
-  std::string bytes;
   const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) bytes.reserve(static_cast<std::size_t>(size));
-  char chunk[1 << 16];
-  for (;;) {  // chunked, so pipes and files that change size are read correctly too
-    const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get());
-    bytes.append(chunk, n);
-    if (n < sizeof chunk) break;
+  // One byte more than the file's size, so that a single read meets the end; a pipe or a file
+  // that grows meanwhile makes the buffer grow until a read comes back short.
+  kernel::LargeVector<char> bytes(ec ? std::size_t{1} << 16 : static_cast<std::size_t>(size) + 1);
+  std::size_t used = 0;
+  for (;;) {
+    used += std::fread(bytes.data() + used, 1, bytes.size() - used, f.get());
+    if (used < bytes.size()) break;
+    bytes.resize(bytes.size() + bytes.size() / 2);
   }
   if (std::ferror(f.get())) throw Error(path + ": read failed (" + std::strerror(errno) + ")");
+  bytes.resize(used);
   return bytes;
 }
 
@@ -68,7 +74,8 @@ ReadResult read_model(const std::string& path) {
                 (ext.empty() ? std::string("(no extension)") : "'" + ext + "'") +
                 "; expected .off, .obj, .stl or .ply");
   }
-  return read_model_from_memory(read_file(path), *format, path);
+  const kernel::LargeVector<char> bytes = read_file(path);
+  return read_model_from_memory(std::string_view(bytes.data(), bytes.size()), *format, path);
 }
 
 ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, const std::string& name) {

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 #include "read_model.h"
 
 namespace delpsc::io::detail {
@@ -60,12 +62,12 @@ class SoupBuilder {
   std::string name_;
   ReadReport report_;
   TriangleSoup soup_;
-  std::vector<std::uint32_t> file_to_merged_;
+  kernel::LargeVector<std::uint32_t> file_to_merged_;
   std::size_t flushed_to_zero_ = 0;        // coordinates below 2^-140 set to 0
   std::size_t first_too_large_ = SIZE_MAX;  // file index of the first vertex beyond 2^140
   // Open addressing, linear probing: slot = merged vertex index + 1, 0 = empty. Kept at most half
   // full. Flat arrays beat std::unordered_map by several times on millions of STL corners.
-  std::vector<std::uint32_t> slots_;
+  kernel::LargeVector<std::uint32_t> slots_;
 };
 
 }  // namespace delpsc::io::detail

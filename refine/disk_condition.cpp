@@ -18,7 +18,7 @@ const char* to_string(DiskFailure f) {
 }
 
 DiskCondition::DiskCondition(const Domain& domain, const BallSource& balls,
-                             const std::vector<VertexPlace>& places)
+                             const kernel::LargeVector<VertexPlace>& places)
     : domain_(&domain), balls_(&balls), places_(&places) {}
 
 namespace {

@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 #include "ball_source.h"
 #include "restricted_facets.h"
 
@@ -46,7 +48,7 @@ struct DiskVerdict {
 class DiskCondition {
  public:
   /// All three must outlive this object; `places` is indexed by PointId and may grow.
-  DiskCondition(const Domain& domain, const BallSource& balls, const std::vector<VertexPlace>& places);
+  DiskCondition(const Domain& domain, const BallSource& balls, const kernel::LargeVector<VertexPlace>& places);
 
   /// The patches containing p, with whether p is interior to each (see D2).
   void patches_of(PointId p, std::vector<std::pair<std::uint32_t, bool>>& out) const;
@@ -59,7 +61,7 @@ class DiskCondition {
  private:
   const Domain* domain_;
   const BallSource* balls_;
-  const std::vector<VertexPlace>* places_;
+  const kernel::LargeVector<VertexPlace>* places_;
 };
 
 }  // namespace delpsc::refine

@@ -79,8 +79,8 @@ void Mesher::initialise() {
   const kernel::Box3 box = domain_->bounding_box();
   const Vec3 centre = 0.5 * (box.lo + box.hi);
   const double diag = std::max((box.hi - box.lo).norm(), 1e-300);
-  std::vector<WeightedPoint> points;
-  std::vector<VertexPlace> places;
+  kernel::LargeVector<WeightedPoint> points;
+  kernel::LargeVector<VertexPlace> places;
   for (int k = 0; k < 8; ++k) {
     const Vec3 corner = centre + 3 * diag * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
     points.push_back(WeightedPoint::from(corner));
@@ -137,8 +137,8 @@ void Mesher::initialise() {
   refinements_at_full_check_ = stats_.ball_refinements;
 }
 
-void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
-                                std::vector<VertexPlace>& places) {
+void Mesher::add_initial_sample(std::span<const BallKey> keys, kernel::LargeVector<WeightedPoint>& points,
+                                kernel::LargeVector<VertexPlace>& places) {
   // Candidates come at λ's density; with a sizing function each is tested against its own
   // spacing min(λ, sizing(x)) (scaled by kGapFillSpacing for the gap fillers; where sizing asks
   // for less than λ the sample is only as dense as λ's, and refinement does the rest). A sizing
@@ -176,6 +176,8 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, std::vector<Weigh
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.
   if (options_.max_vertices > 0 && keys.size() + fixed.size() + chosen.size() > options_.max_vertices) return;
+  points.reserve(points.size() + chosen.size());
+  places.reserve(places.size() + chosen.size());
   for (const std::uint32_t i : chosen) {
     points.push_back(WeightedPoint::from(candidates[i]));
     places.push_back(on_patch(patches[i]));

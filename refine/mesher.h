@@ -196,8 +196,8 @@ class Mesher {
  private:
   void initialise();
   void seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const;
-  void add_initial_sample(std::span<const BallKey> keys, std::vector<WeightedPoint>& points,
-                          std::vector<VertexPlace>& places);
+  void add_initial_sample(std::span<const BallKey> keys, kernel::LargeVector<WeightedPoint>& points,
+                          kernel::LargeVector<VertexPlace>& places);
   // Facets, then re-check touched vertices; `inserted`: the point inserted, kNoPoint after a removal.
   void apply(const delaunay::ChangeSet& changes, PointId inserted);
   void recheck(PointId p);
@@ -221,12 +221,12 @@ class Mesher {
   MesherOptions options_;
   FacetCriteria criteria_;
   delaunay::RegularTriangulation dt_;
-  std::vector<VertexPlace> places_;  // by PointId
+  kernel::LargeVector<VertexPlace> places_;  // by PointId
   RestrictedFacets facets_;
   DiskCondition disk_;
   std::unordered_map<BallKey, PointId> ball_point_;
   std::unordered_set<PointId> failing_d12_, failing_d34_;
-  std::vector<PointId> touched_;
+  kernel::LargeVector<PointId> touched_;
   delaunay::ChangeSet changes_;
   std::size_t frame_points_ = 0;
   // stats_.ball_refinements when every vertex was last checked (end of initialise,

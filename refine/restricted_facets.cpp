@@ -317,7 +317,7 @@ double RestrictedFacets::order_key(double badness, const Vec3& x) const {
   return std::floor(std::log2(badness) * 8) + static_cast<double>((std::uint64_t{1} << 42) - 1 - code) * 0x1.0p-42;
 }
 
-void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
+void RestrictedFacets::touch_changed(kernel::LargeVector<PointId>& touched) {
   auto touch = [&](const std::array<std::uint32_t, 4>& t) { touched.insert(touched.end(), t.begin(), t.begin() + 3); };
   if (gone_.empty() || made_.empty()) {
     // Nothing to cancel out (rebuild from an empty set: every record new): no sort needed
@@ -345,7 +345,7 @@ void RestrictedFacets::touch_changed(std::vector<PointId>& touched) {
   made_.clear();
 }
 
-void RestrictedFacets::rebuild(std::vector<PointId>& touched, const std::function<void()>& tick, double cover_power) {
+void RestrictedFacets::rebuild(kernel::LargeVector<PointId>& touched, const std::function<void()>& tick, double cover_power) {
   for (FacetRef& r : facet_refs_) forget(r);
   cover_power_ = cover_power;
   flat_.assign(dt_->cell_capacity(), kFlatUnknown);
@@ -390,7 +390,7 @@ std::optional<std::uint32_t> RestrictedFacets::carry_over(std::uint32_t first, P
   return head;
 }
 
-void RestrictedFacets::update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted) {
+void RestrictedFacets::update(const delaunay::ChangeSet& changes, kernel::LargeVector<PointId>& touched, PointId inserted) {
   const bool insertion = inserted != delaunay::kNoPoint;
   if (!insertion) cover_power_ = std::numeric_limits<double>::infinity();  // see rebuild()
   if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());

@@ -97,7 +97,7 @@ class RestrictedFacets {
   /// of new cells until the first removal: the least power distance to the vertices equals the
   /// least to all points inserted, hidden ones included, so an insertion (whatever it hides)
   /// only lowers it at every point of space; a removal may raise it.
-  void rebuild(std::vector<PointId>& touched, const std::function<void()>& tick = {},
+  void rebuild(kernel::LargeVector<PointId>& touched, const std::function<void()>& tick = {},
                double cover_power = std::numeric_limits<double>::infinity());
   /// Follows one insert()/remove(): see the file comment. Appends to `touched` every vertex
   /// whose set of incident (triangle, patch) pairs changed - not a vertex whose pairs were
@@ -106,7 +106,7 @@ class RestrictedFacets {
   /// delaunay::kNoPoint when they come from a removal. Precondition for an insertion: the
   /// triangulation had dimension 3 before it, so the created cells are exactly those with
   /// `inserted` as a vertex (not so when an insertion first reaches dimension 3: use rebuild()).
-  void update(const delaunay::ChangeSet& changes, std::vector<PointId>& touched, PointId inserted);
+  void update(const delaunay::ChangeSet& changes, kernel::LargeVector<PointId>& touched, PointId inserted);
 
   std::size_t size() const { return live_; }
   /// Dual edges queried against the domain so far (segments and rays): the cost that
@@ -158,7 +158,7 @@ class RestrictedFacets {
   std::optional<std::uint32_t> carry_over(std::uint32_t first, PointId inserted);
   /// Appends to `touched` the vertices of the (triangle, patch) pairs in gone_ or made_ but not
   /// both, and empties them.
-  void touch_changed(std::vector<PointId>& touched);
+  void touch_changed(kernel::LargeVector<PointId>& touched);
   /// The line of points power-equidistant from t's vertices: t's orthocentre, t's unit normal,
   /// the power distance from the orthocentre to t's vertices, and t's shape, |ab x ac|² /
   /// (|ab|² |ac|²) (the squared sine of the angle at a). nullopt for a degenerate t.
@@ -189,7 +189,7 @@ class RestrictedFacets {
   const Domain* domain_;
   kernel::Box3 box_;  // the domain's, for order_key
   kernel::LargeVector<RestrictedFacet> records_;
-  std::vector<std::uint32_t> free_;
+  kernel::LargeVector<std::uint32_t> free_;
   std::size_t live_ = 0;
   IncidenceLists<Incidence> by_vertex_;
   // Per cell slot, per facet index: its records. Indexing by cell facet instead of hashing the
@@ -200,16 +200,16 @@ class RestrictedFacets {
   // Per cell slot, whether well_conditioned() found the cell nearly flat (unknown until asked).
   static constexpr std::uint8_t kFlatUnknown = 0, kFlatNo = 1, kFlatYes = 2;
   mutable kernel::LargeVector<std::uint8_t> flat_;
-  std::vector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
-  std::vector<FacetRef> boundary_refs_;        // scratch: per created cell, its boundary facet's old ref
+  kernel::LargeVector<FacetRef> doomed_;               // scratch: records of destroyed cells, forgotten last
+  kernel::LargeVector<FacetRef> boundary_refs_;        // scratch: per created cell, its boundary facet's old ref
   std::uint32_t update_epoch_ = 0;
   std::vector<SurfaceHit> hits_;               // scratch
-  std::vector<char> excluded_;                 // by PointId: exclude_vertices()
+  kernel::LargeVector<char> excluded_;                 // by PointId: exclude_vertices()
   std::size_t queries_ = 0;
   std::size_t skipped_ = 0;
   // rebuild()'s proven cover, kept by update() until the first removal voids it (see rebuild).
   double cover_power_ = std::numeric_limits<double>::infinity();
-  std::vector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
+  kernel::LargeVector<std::array<std::uint32_t, 4>> gone_, made_;  // scratch: (vertices, patch) forgotten, made
   using HeapEntry = std::tuple<double, std::uint32_t, std::uint32_t>;  // power, slot, stamp
   std::priority_queue<HeapEntry> heap_;
   bool heap_active_ = false;  // heap_ is made on the first largest() call

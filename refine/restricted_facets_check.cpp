@@ -80,7 +80,7 @@ std::string describe(const Pair& p, const char* where) {
 std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangulation& dt, const Domain& domain,
                                                  const RestrictedFacets& kept, std::size_t max_problems) {
   RestrictedFacets fresh(dt, domain);
-  std::vector<PointId> touched;
+  kernel::LargeVector<PointId> touched;
   fresh.rebuild(touched);
   const std::vector<Pair> a = pairs_of(kept), b = pairs_of(fresh);
   std::vector<std::string> problems;

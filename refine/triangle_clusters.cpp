@@ -10,7 +10,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
   const double min_cos = std::cos(max_angle_degrees * 3.141592653589793 / 180);
   const std::size_t n = complex.triangles.size();
   constexpr std::uint32_t kNone = 0xffffffffu;
-  std::vector<Vec3> normal(n), centroid(n);
+  kernel::LargeVector<Vec3> normal(n), centroid(n);
   for (std::size_t t = 0; t < n; ++t) {
     const auto& tri = complex.triangles[t];
     const Vec3 &a = complex.vertices[tri[0]], &b = complex.vertices[tri[1]], &c = complex.vertices[tri[2]];
@@ -19,7 +19,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
   }
   // The triangle across edge k of t, if the edge is no feature (exactly two triangles), looked
   // up once: the three passes below read it again and again.
-  std::vector<std::array<std::uint32_t, 3>> neighbour(n, {kNone, kNone, kNone});
+  kernel::LargeVector<std::array<std::uint32_t, 3>> neighbour(n, {kNone, kNone, kNone});
   for (std::uint32_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t e = complex.triangle_edges[t][k];
@@ -30,7 +30,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
   TriangleClusters out;
   out.cluster_of.assign(n, kNone);
   out.boundary_edges.assign(n, 0);
-  std::vector<std::uint32_t> queue;
+  kernel::LargeVector<std::uint32_t> queue;
   for (std::uint32_t s = 0; s < n; ++s) {
     if (out.cluster_of[s] != kNone) continue;
     const auto id = static_cast<std::uint32_t>(out.seed.size());

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
+
 #include <delpsc/protect/complex.h>
 
 namespace delpsc::refine {
@@ -14,13 +16,13 @@ namespace delpsc::refine {
 /// Per triangle of a complex: its cluster, which of its edges bound the cluster, and its
 /// distance to the cluster's boundary; per cluster its seed triangle.
 struct TriangleClusters {
-  std::vector<std::uint32_t> cluster_of;     ///< per triangle
-  std::vector<std::uint32_t> seed;           ///< per cluster: the triangle it was grown from
-  std::vector<std::uint8_t> boundary_edges;  ///< per triangle, bit k: edge k (opposite vertex k)
+  kernel::LargeVector<std::uint32_t> cluster_of;     ///< per triangle
+  kernel::LargeVector<std::uint32_t> seed;           ///< per cluster: the triangle it was grown from
+  kernel::LargeVector<std::uint8_t> boundary_edges;  ///< per triangle, bit k: edge k (opposite vertex k)
   /// Per triangle: 0 with a boundary edge, else the shortest path through the centroids of its
   /// cluster's triangles to one that has; exact up to `horizon`, larger (up to HUGE_VAL) beyond.
   /// A horizon that is infinite or NaN means none: exact everywhere.
-  std::vector<double> distance;
+  kernel::LargeVector<double> distance;
 };
 
 /// Clusters grown from seeds in triangle order across edges that are no feature, while a

@@ -41,7 +41,7 @@ std::vector<delaunay::PointId> insert_frame(delaunay::RegularTriangulation& dt) 
 void insert_and_follow(delaunay::RegularTriangulation& dt, const refine::Domain& domain,
                        refine::RestrictedFacets& facets, std::mt19937_64& rng, int count, int check_every) {
   delaunay::ChangeSet changes;
-  std::vector<delaunay::PointId> touched;
+  kernel::LargeVector<delaunay::PointId> touched;
   for (int i = 0; i < count; ++i) {
     const delaunay::PointId id = dt.insert(WeightedPoint::from(on_cube(rng)), &changes);
     if (dt.status(id) != delaunay::PointStatus::vertex) continue;
@@ -65,7 +65,7 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
   std::mt19937_64 rng(3);
   for (int i = 0; i < 60; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
   refine::RestrictedFacets facets(dt, domain);
-  std::vector<delaunay::PointId> touched;
+  kernel::LargeVector<delaunay::PointId> touched;
   facets.rebuild(touched);
   REQUIRE(facets.size() > 0);
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
@@ -92,7 +92,7 @@ TEST_CASE("excluded frame points: no facet through them is examined, and the rec
   for (int i = 0; i < 200; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
   refine::RestrictedFacets facets(dt, domain), all(dt, domain);
   facets.exclude_vertices(frame);
-  std::vector<delaunay::PointId> touched;
+  kernel::LargeVector<delaunay::PointId> touched;
   facets.rebuild(touched);
   all.rebuild(touched);
   REQUIRE(facets.size() > 0);
@@ -144,7 +144,7 @@ TEST_CASE("rebuild with the initial sample's proven cover skips most queries and
     refine::RestrictedFacets culled(dt, domain), all(dt, domain);
     culled.exclude_vertices(frame);
     all.exclude_vertices(frame);
-    std::vector<delaunay::PointId> touched;
+    kernel::LargeVector<delaunay::PointId> touched;
     culled.rebuild(touched, {}, bound);
     all.rebuild(touched);
     REQUIRE(all.size() > 0);
