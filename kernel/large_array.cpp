@@ -1,5 +1,6 @@
 #include "large_array.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdlib>
@@ -7,6 +8,9 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#endif
+#if defined(__unix__)
+#include <pthread.h>
 #endif
 
 namespace delpsc::kernel {
@@ -45,34 +49,48 @@ int size_class(std::size_t bytes) {
 // moves on, and the next array that grows takes them. Chunks are returned to the system when no
 // block is live any more (one is kept, so that a loop that allocates and frees one scratch array
 // does not map and zero a chunk each time).
+//
+// After fork() the child starts an empty pool: the parent's chunks are shared copy-on-write, and
+// reusing their free parts would copy them 4 KiB page by page, each a fault (a process that
+// loads a model and then forks a child per run, as our CGAL comparison does, lost the pool's
+// gain that way). Blocks the child inherited stay valid; freeing one leaves it alone.
 class MidBlockPool {
  public:
+  /// The process's pool, made on first use and never destroyed (blocks may be freed by static
+  /// destructors that run after its own would).
+  static MidBlockPool& instance() {
+    static auto* pool = new MidBlockPool;
+    return *pool;
+  }
+
   void* allocate(std::size_t bytes) {
     const int k = size_class(bytes);
     const std::lock_guard lock(mutex_);
-    ++live_;
     if (FreeBlock* b = free_[k]) {
       free_[k] = b->next;
+      ++live_;
       return b;
     }
     const std::size_t size = kPoolMinBytes << k;
     if (static_cast<std::size_t>(end_ - cursor_) < size) {
-      shelve_rest_of_chunk();
-      // Before the chunk is mapped, so that a failure leaves the pool as it was.
-      if (chunks_.size() == chunks_.capacity()) chunks_.reserve(2 * chunks_.size() + 4);
+      // Room first, so that a failure leaves the pool as it was.
+      chunks_.reserve(chunks_.size() + 1);
       auto* chunk = static_cast<unsigned char*>(huge_page_block(kHugePageBytes));
-      chunks_.push_back(chunk);
+      shelve_rest_of_chunk();
+      chunks_.insert(std::upper_bound(chunks_.begin(), chunks_.end(), chunk), chunk);
       cursor_ = chunk;
       end_ = chunk + kHugePageBytes;
     }
     void* p = cursor_;
     cursor_ += size;
+    ++live_;
     return p;
   }
 
   void deallocate(void* p, std::size_t bytes) noexcept {
     const int k = size_class(bytes);
     const std::lock_guard lock(mutex_);
+    if (!owns(p)) return;  // from before a fork: the parent's
     auto* b = static_cast<FreeBlock*>(p);
     b->next = free_[k];
     free_[k] = b;
@@ -80,9 +98,27 @@ class MidBlockPool {
   }
 
  private:
+  MidBlockPool() {
+#if defined(__unix__)
+    // The lock is held across fork(), so that the child never inherits it locked mid-update.
+    pthread_atfork([] { instance().mutex_.lock(); }, [] { instance().mutex_.unlock(); },
+                   [] {
+                     MidBlockPool& pool = instance();
+                     pool.mutex_.unlock();
+                     pool.forget_all();
+                   });
+#endif
+  }
+
   struct FreeBlock {
     FreeBlock* next;
   };
+
+  // Whether p lies in one of this process's chunks (sorted by address). O(log chunks).
+  bool owns(const void* p) const noexcept {
+    const auto* c = reinterpret_cast<const unsigned char*>(reinterpret_cast<std::uintptr_t>(p) & ~(kHugePageBytes - 1));
+    return std::binary_search(chunks_.begin(), chunks_.end(), c);
+  }
 
   // The unused end of the current chunk goes to the free lists, largest pieces first (offsets
   // and sizes are multiples of kPoolMinBytes, so every piece is aligned like a carved block).
@@ -107,19 +143,24 @@ class MidBlockPool {
     end_ = cursor_ + kHugePageBytes;
   }
 
+  // In a forked child: the inherited chunks are left mapped (live blocks may be in them) but
+  // never carved or reused again.
+  void forget_all() noexcept {
+    chunks_.clear();
+    free_.fill(nullptr);
+    cursor_ = end_ = nullptr;
+    live_ = 0;
+  }
+
   std::mutex mutex_;
   std::array<FreeBlock*, kClasses> free_{};
-  std::vector<unsigned char*> chunks_;
-  unsigned char* cursor_ = nullptr;  // the current chunk's unused part: [cursor_, end_)
+  std::vector<unsigned char*> chunks_;  // sorted by address
+  unsigned char* cursor_ = nullptr;     // the current chunk's unused part: [cursor_, end_)
   unsigned char* end_ = nullptr;
   std::size_t live_ = 0;
 };
 
-MidBlockPool& mid_block_pool() {
-  // Never destroyed: blocks may be freed by static destructors that run after ours would.
-  static auto* pool = new MidBlockPool;
-  return *pool;
-}
+MidBlockPool& mid_block_pool() { return MidBlockPool::instance(); }
 
 }  // namespace
 

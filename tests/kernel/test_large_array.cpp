@@ -7,6 +7,8 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -87,6 +89,35 @@ TEST_CASE("allocate_large: pooled blocks are disjoint, keep their contents, and 
     });
   for (std::thread& thread : threads) thread.join();
   CHECK(std::count(ok.begin(), ok.end(), 1) == 4);
+}
+
+// A forked child must not carve or reuse the parent's chunks (shared copy-on-write: every page
+// it wrote there would be copied, a fault each), yet the blocks it inherited stay usable.
+TEST_CASE("allocate_large: a forked child starts an empty pool") {
+  auto* inherited = static_cast<unsigned char*>(kernel::allocate_large(20000));  // keeps the parent's chunk
+  std::fill(inherited, inherited + 20000, 5);
+  void* freed = kernel::allocate_large(8192);
+  kernel::deallocate_large(freed, 8192);  // on the parent's free list
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    int status = 0;
+    void* mine = kernel::allocate_large(8192);
+    const auto chunk = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) / kernel::kHugePageBytes; };
+    if (mine == freed || chunk(mine) == chunk(inherited)) status |= 1;  // reused the parent's pages
+    if (inherited[19999] != 5) status |= 2;                           // the inherited block is intact
+    kernel::deallocate_large(inherited, 20000);                      // freeing it is harmless
+    kernel::deallocate_large(mine, 8192);
+    void* again = kernel::allocate_large(8192);
+    if (chunk(again) == chunk(inherited)) status |= 4;
+    kernel::deallocate_large(again, 8192);
+    _exit(status);
+  }
+  int status = -1;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  kernel::deallocate_large(inherited, 20000);
 }
 
 TEST_CASE("LargeVector behaves as std::vector through growth past the large-block size") {
