@@ -150,7 +150,7 @@ void orient(benchmark::State& state, const Model& m) {
   mesher.run();
   const io::SurfaceMesh mesh = mesher.output();
   for (auto _ : state) {
-    std::vector<std::array<std::uint32_t, 3>> triangles = mesh.triangles;
+    kernel::LargeVector<std::array<std::uint32_t, 3>> triangles = mesh.triangles;
     benchmark::DoNotOptimize(refine::orient_triangles(mesh.vertices, triangles));
     benchmark::DoNotOptimize(triangles);
   }

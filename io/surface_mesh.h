@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 #include "triangle_soup.h"
@@ -17,22 +18,22 @@ namespace delpsc::io {
 /// triangle_patch is empty (no labels) or has one entry per triangle; the same for edge_curve
 /// and edges. Ids are the complex's patch / curve numbers, any int32 value.
 struct SurfaceMesh {
-  std::vector<Vec3> vertices;
+  kernel::LargeVector<Vec3> vertices;
   /// Vertex indices, counter-clockwise seen from outside.
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<std::int32_t> triangle_patch;
+  kernel::LargeVector<std::array<std::uint32_t, 3>> triangles;
+  kernel::LargeVector<std::int32_t> triangle_patch;
   /// Feature-curve segments.
-  std::vector<std::array<std::uint32_t, 2>> edges;
-  std::vector<std::int32_t> edge_curve;
+  kernel::LargeVector<std::array<std::uint32_t, 2>> edges;
+  kernel::LargeVector<std::int32_t> edge_curve;
   /// Indices of the corner vertices (0-faces of the complex).
-  std::vector<std::uint32_t> corners;
+  kernel::LargeVector<std::uint32_t> corners;
 };
 
 /// The triangles of a soup as an unlabelled surface mesh (copies vertices and triangles).
 inline SurfaceMesh surface_mesh_from(const TriangleSoup& soup) {
   SurfaceMesh mesh;
-  mesh.vertices = soup.vertices;
-  mesh.triangles = soup.triangles;
+  mesh.vertices.assign(soup.vertices.begin(), soup.vertices.end());
+  mesh.triangles.assign(soup.triangles.begin(), soup.triangles.end());
   return mesh;
 }
 

@@ -7,7 +7,7 @@
 
 namespace delpsc::refine {
 
-std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles) {
+std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles) {
   const std::size_t n = triangles.size();
   constexpr std::uint32_t kNone = 0xffffffffu;
   // Each vertex's triangles (flat, by vertex), each with the two other vertices in the

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <delpsc/kernel/point.h>
@@ -17,6 +18,6 @@ namespace delpsc::refine {
 
 /// Reorders the vertices of triangles in place; returns the number of components found
 /// non-orientable.
-std::size_t orient_triangles(const std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles);
+std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles);
 
 }  // namespace delpsc::refine

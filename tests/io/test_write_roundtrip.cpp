@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include <delpsc/io/mesh_writer.h>
@@ -27,7 +28,9 @@ io::SurfaceMesh awkward_torus() {
   return m;
 }
 
-io::TriangleSoup soup_of(const io::SurfaceMesh& m) { return {m.vertices, m.triangles}; }
+io::TriangleSoup soup_of(const io::SurfaceMesh& m) {
+  return {{m.vertices.begin(), m.vertices.end()}, {m.triangles.begin(), m.triangles.end()}};
+}
 
 }  // namespace
 
@@ -44,8 +47,8 @@ TEST_CASE("OFF, OBJ and PLY round-trip exactly; STL to float precision") {
       CHECK(canonical_triangles(r.soup) == canonical_triangles_as_float(soup_of(mesh)));
     } else {
       // Same vertex numbering too: the indexed formats keep it and nothing is merged.
-      CHECK(r.soup.vertices == mesh.vertices);
-      CHECK(r.soup.triangles == mesh.triangles);
+      CHECK(std::equal(r.soup.vertices.begin(), r.soup.vertices.end(), mesh.vertices.begin(), mesh.vertices.end()));
+      CHECK(std::equal(r.soup.triangles.begin(), r.soup.triangles.end(), mesh.triangles.begin(), mesh.triangles.end()));
       CHECK(r.report.merged_vertices == 0);
     }
     CHECK(canonical_triangles_as_float(r.soup) == canonical_triangles_as_float(soup_of(mesh)));
