@@ -159,7 +159,7 @@ void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   std::vector<std::uint32_t> v(n);
   for (std::size_t i = 0; i < n; ++i) v[i] = file_to_merged_[indices[i]];
   using Triangle = std::array<std::uint32_t, 3>;
-  const auto fan = [](const std::vector<std::uint32_t>& corners, std::vector<Triangle>& out) {
+  const auto fan = [](const std::vector<std::uint32_t>& corners, auto& out) {
     for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
   };
   if (n <= 3 || n > kMostCornersClipped) return fan(v, soup_.triangles);

@@ -7,14 +7,15 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::io {
 
 struct TriangleSoup {
-  std::vector<Vec3> vertices;
+  kernel::LargeVector<Vec3> vertices;
   /// Vertex indices, counter-clockwise seen from the side the file calls outside.
-  std::vector<std::array<std::uint32_t, 3>> triangles;
+  kernel::LargeVector<std::array<std::uint32_t, 3>> triangles;
 };
 
 }  // namespace delpsc::io

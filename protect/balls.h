@@ -142,7 +142,7 @@ class BallSet {
 
   const Complex* complex_;
   double diagonal_ = 0;
-  std::vector<Ball> balls_;
+  kernel::LargeVector<Ball> balls_;
   std::size_t live_ = 0, live_corners_ = 0;
   std::vector<BallId> corner_ball_;
   std::vector<BallId> first_, last_;

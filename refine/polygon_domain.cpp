@@ -141,7 +141,7 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
   if (!(spacing > 0) || !std::isfinite(spacing)) return {};
   const double per_area = 4.0 / (spacing * spacing);
   const double step = kLatticeStep * spacing, jitter = kLatticeJitter * spacing;
-  std::vector<double> expected_in(complex_.triangles.size());
+  kernel::LargeVector<double> expected_in(complex_.triangles.size());
   double total = 0;
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
     const auto& tri = complex_.triangles[t];
@@ -165,7 +165,7 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
   // random candidates go everywhere, as without it.
   const double band = 2.5 * spacing;
   const TriangleClusters clusters = cluster_triangles(complex_, kClusterAngle, band);
-  std::vector<double> cluster_area(clusters.seed.size(), 0);
+  kernel::LargeVector<double> cluster_area(clusters.seed.size(), 0);
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) cluster_area[clusters.cluster_of[t]] += expected_in[t];
   bool lattice_laid = true;
   const auto has_lattice = [&](std::uint32_t t) { return lattice_laid && cluster_area[clusters.cluster_of[t]] >= 2; };

@@ -72,7 +72,7 @@ TriangleClusters cluster_triangles(const protect::Complex& complex, double max_a
     if (count > 0 && steps > 0) width = 4 * steps / count;
     last_bucket = 4096;
   }
-  std::vector<std::vector<std::pair<double, std::uint32_t>>> buckets(1);
+  std::vector<kernel::LargeVector<std::pair<double, std::uint32_t>>> buckets(1);
   const auto file = [&](double d, std::uint32_t t) {
     const double b = std::floor(d / width);  // NaN (0 / 0, a width that underflowed): the last
     const std::size_t i = b < static_cast<double>(last_bucket) ? static_cast<std::size_t>(b) : last_bucket;

@@ -12,7 +12,7 @@ using namespace delpsc;
 
 namespace {
 
-using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+using Triangles = kernel::LargeVector<std::array<std::uint32_t, 3>>;
 
 // How many times each directed edge is used: a consistent orientation uses each edge shared by
 // two triangles once in each direction.
@@ -25,7 +25,7 @@ std::size_t edges_used_twice_the_same_way(const Triangles& triangles) {
   return bad;
 }
 
-double signed_volume(const std::vector<Vec3>& v, const Triangles& triangles) {
+double signed_volume(std::span<const Vec3> v, const Triangles& triangles) {
   double volume = 0;
   for (const auto& t : triangles) volume += v[t[0]].dot(v[t[1]].cross(v[t[2]]));
   return volume / 6;
