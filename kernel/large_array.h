@@ -4,7 +4,7 @@
 // Why: these arrays are read at random (a walk or a cavity search jumps across the cell array),
 // and with 4 KiB pages a mesher run of 50,000 vertices touches ~20,000 pages. Each first touch is
 // a page fault, which on the virtual machines we run on costs several microseconds of system
-// time, and each random read risks a TLB miss. Blocks from 256 KiB up are therefore aligned to
+// time, and each random read risks a TLB miss. Blocks above 1 MiB are therefore aligned to
 // 2 MiB and advised for transparent huge pages (Linux madvise(MADV_HUGEPAGE); honoured when the
 // system's THP mode is "always" or "madvise", as on our machines; elsewhere a no-op): on the
 // cube at 0.456% of the diagonal, faults fell from ~21,000 to ~4,000 and the CPU time of the
@@ -15,7 +15,9 @@
 // pages one by one: on the virtual machines we run on a 4 KiB fault costs ~11 us, a whole 2 MiB
 // huge page ~160 us. The pool keeps one free list per power-of-two size and reuses freed blocks
 // (a growing vector's old blocks serve the next one); it returns its chunks to the system when no
-// pooled block is live, but one (BENCHMARKS.md, "Session 20: a pool for mid-sized arrays").
+// pooled block is live, but one; a forked child starts an empty pool, as writing into the
+// parent's chunks would copy them page by page (BENCHMARKS.md, "Session 20: a pool for
+// mid-sized arrays").
 //
 // Cost: a pooled block takes the next power of two of its size; a block above 1 MiB is rounded up
 // to a multiple of 2 MiB (at most 2 MiB more per array). Below 4 KiB, operator new as before.
