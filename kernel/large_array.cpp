@@ -165,7 +165,7 @@ MidBlockPool& mid_block_pool() { return MidBlockPool::instance(); }
 }  // namespace
 
 void* allocate_large(std::size_t bytes) {
-  if (bytes < kPoolMinBytes) return ::operator new(bytes);
+  if (bytes < kPoolMinBytes || (!kPoolInUse && bytes <= kPoolMaxBytes)) return ::operator new(bytes);
   if (bytes <= kPoolMaxBytes) return mid_block_pool().allocate(bytes);
   const std::size_t rounded = rounded_to_huge_pages(bytes);
   if (rounded < bytes) throw std::bad_alloc();
@@ -174,7 +174,7 @@ void* allocate_large(std::size_t bytes) {
 
 void deallocate_large(void* p, std::size_t bytes) noexcept {
   if (p == nullptr) return;
-  if (bytes < kPoolMinBytes) {
+  if (bytes < kPoolMinBytes || (!kPoolInUse && bytes <= kPoolMaxBytes)) {
     ::operator delete(p);
   } else if (bytes <= kPoolMaxBytes) {
     mid_block_pool().deallocate(p, bytes);
