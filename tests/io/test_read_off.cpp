@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <delpsc/io/read_model.h>
 
@@ -166,4 +171,37 @@ TEST_CASE("OFF: a polygon whose fan would make slivers is split into well-shaped
   CHECK(worst > 0.1);
   CHECK(area == doctest::Approx(3 + 2e-5));  // the whole polygon, once
   CHECK(r.report.degenerate_triangles.empty());
+}
+
+// read_model reads a file straight into a buffer of its size; a FIFO has no size, so the buffer
+// starts at 64 KiB and grows until a read comes back short. Both must give the bytes exactly:
+// a model of ~300 KiB read through each equals the same model parsed from memory.
+TEST_CASE("OFF: a file and a FIFO larger than the first buffer read exactly as from memory") {
+  std::string text = "OFF\n20000 10000 0\n";
+  for (int i = 0; i < 20000; ++i)
+    text += std::to_string(i % 97) + ".25 " + std::to_string(i / 97) + ".5 " + std::to_string(i % 13) + "\n";
+  for (int t = 0; t < 10000; ++t)
+    text += "3 " + std::to_string(2 * t) + " " + std::to_string(2 * t + 1) + " " + std::to_string((2 * t + 2) % 20000) + "\n";
+  REQUIRE(text.size() > 4 * (std::size_t{1} << 16));
+  const auto expected = read_bytes(text, io::ModelFormat::off);
+
+  const std::string file = test::temp_path("big.off");
+  test::write_file(file, text);
+  const auto from_file = io::read_model(file);
+
+  const std::string fifo = test::temp_path("big_fifo.off");
+  std::remove(fifo.c_str());
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  std::thread writer([&] { test::write_file(fifo, text); });  // blocks until the reader opens it
+  const auto from_fifo = io::read_model(fifo);
+  writer.join();
+  std::remove(fifo.c_str());
+
+  for (const auto* r : {&from_file, &from_fifo}) {
+    CHECK(r->report.file_vertices == 20000);
+    CHECK(std::equal(r->soup.vertices.begin(), r->soup.vertices.end(), expected.soup.vertices.begin(),
+                     expected.soup.vertices.end()));
+    CHECK(std::equal(r->soup.triangles.begin(), r->soup.triangles.end(), expected.soup.triangles.begin(),
+                     expected.soup.triangles.end()));
+  }
 }
