@@ -160,13 +160,11 @@ class MidBlockPool {
   std::size_t live_ = 0;
 };
 
-MidBlockPool& mid_block_pool() { return MidBlockPool::instance(); }
-
 }  // namespace
 
 void* allocate_large(std::size_t bytes) {
   if (bytes < kPoolMinBytes || (!kPoolInUse && bytes <= kPoolMaxBytes)) return ::operator new(bytes);
-  if (bytes <= kPoolMaxBytes) return mid_block_pool().allocate(bytes);
+  if (bytes <= kPoolMaxBytes) return MidBlockPool::instance().allocate(bytes);
   const std::size_t rounded = rounded_to_huge_pages(bytes);
   if (rounded < bytes) throw std::bad_alloc();
   return huge_page_block(rounded);
@@ -177,7 +175,7 @@ void deallocate_large(void* p, std::size_t bytes) noexcept {
   if (bytes < kPoolMinBytes || (!kPoolInUse && bytes <= kPoolMaxBytes)) {
     ::operator delete(p);
   } else if (bytes <= kPoolMaxBytes) {
-    mid_block_pool().deallocate(p, bytes);
+    MidBlockPool::instance().deallocate(p, bytes);
   } else {
     std::free(p);
   }
