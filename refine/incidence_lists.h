@@ -31,6 +31,13 @@ class IncidenceLists {
     return {inline_.data() + std::size_t{v} * kInline, count_[v]};
   }
 
+  /// Room for vertices [0, n) without moving the lists (the inline slots are allocated, not
+  /// touched: a block of huge pages is faulted in only where written). O(1) when it fits.
+  void reserve(std::size_t n) {
+    count_.reserve(n);
+    inline_.reserve(n * kInline);
+  }
+
   /// Appends x to v's list. Amortised O(1).
   void push(std::uint32_t v, const T& x) {
     if (v >= count_.size()) grow(v);
@@ -81,10 +88,11 @@ class IncidenceLists {
  private:
   static constexpr std::uint8_t kSpilled = 0xff;
 
+  // Exactly to v: the vector's own growth keeps appends amortised O(1), and only the slots
+  // used are zero-filled (touched) - with reserve() beforehand, nothing is copied either.
   void grow(std::uint32_t v) {
-    const std::size_t size = std::max<std::size_t>(std::size_t{v} + 1, 2 * count_.size());
-    count_.resize(size, 0);
-    inline_.resize(size * kInline);
+    count_.resize(std::size_t{v} + 1, 0);
+    inline_.resize((std::size_t{v} + 1) * kInline);
   }
 
   kernel::LargeVector<T> inline_;         // kInline slots per vertex

@@ -120,6 +120,12 @@ void Mesher::initialise() {
     if (options_.progress) options_.progress(domain_vertex_count());
   };
   std::vector<PointId> ids;
+  // Room for step 2's points too (1-27% more on the CGAL demo models): the per-point arrays of
+  // the triangulation and places_ then grow in place instead of being copied to new blocks
+  // (reserved memory that is never written costs no page fault).
+  const std::size_t room = points.size() + points.size() / 4 + 64;
+  dt_.reserve(room);
+  places_.reserve(room);
   dt_.insert(points, &ids, [&](std::size_t) { tick(); });
   places_.assign(dt_.number_of_points(), {});
   for (std::size_t i = 0; i < ids.size(); ++i) {

@@ -185,6 +185,8 @@ class RestrictedFacets {
   std::uint32_t new_record();
   FacetRef& ref(delaunay::CellId c, int i) { return facet_refs_[4 * std::size_t{c} + static_cast<std::size_t>(i)]; }
 
+  /// rebuild() reserves 1 / kGrowthRoom more of every per-cell and per-vertex array for step 2.
+  static constexpr std::size_t kGrowthRoom = 4;
   const delaunay::RegularTriangulation* dt_;
   const Domain* domain_;
   kernel::Box3 box_;  // the domain's, for order_key

@@ -49,3 +49,24 @@ TEST_CASE("IncidenceLists keeps the same multisets as a vector per id") {
   }
   CHECK(lists[1u << 30].empty());  // an id never pushed to
 }
+
+// reserve(n) is the restricted facets' promise that step 2's new vertices (ids below n) do not
+// move the lists: pointers into them stay valid. Without it the first push past the size moves
+// everything (and copies it to a new block).
+TEST_CASE("IncidenceLists::reserve keeps the lists in place while ids fit") {
+  using Item = std::uint64_t;
+  refine::IncidenceLists<Item> lists;
+  lists.reserve(1000);
+  lists.push(10, 7);
+  const Item* before = lists[10].data();
+  for (std::uint32_t v = 11; v < 1000; ++v) lists.push(v, v);
+  CHECK(lists[10].data() == before);
+  CHECK(lists[10].size() == 1);
+  CHECK(lists[10][0] == 7);
+  for (std::uint32_t v = 11; v < 1000; ++v) REQUIRE((lists[v].size() == 1 && lists[v][0] == v));
+  // Past the reservation the lists move, keeping their contents.
+  lists.push(5000, 1);
+  CHECK(lists[10][0] == 7);
+  CHECK(lists[999][0] == 999);
+  CHECK(lists[5000][0] == 1);
+}
