@@ -403,7 +403,8 @@ PointId RegularTriangulation::insert(const WeightedPoint& p, ChangeSet* changes,
 }
 
 PointId RegularTriangulation::insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids,
-                                     const std::function<void(std::size_t inserted)>& progress) {
+                                     const std::function<void(std::size_t inserted)>& progress, std::size_t lead) {
+  if (lead > points.size()) throw std::invalid_argument("RegularTriangulation::insert: lead exceeds the batch");
   const auto first = static_cast<PointId>(points_.size());
   // Validate the whole batch first, so that a bad point leaves the triangulation unchanged.
   for (const WeightedPoint& p : points)
@@ -415,16 +416,29 @@ PointId RegularTriangulation::insert(std::span<const WeightedPoint> points, std:
   std::vector<std::uint32_t> order;
   brio_order(points, order);
   if (ids) ids->resize(points.size());
+  std::vector<PointId> leading;  // the lead points' ids: inserted first, numbered in place
   for (std::size_t k = 0; k < order.size(); ++k) {
     append_point(points[order[k]]);
-    if (ids) (*ids)[order[k]] = first + static_cast<PointId>(k);
+    const PointId id = first + static_cast<PointId>(k);
+    if (ids) (*ids)[order[k]] = id;
+    if (order[k] < lead) leading.push_back(id);
   }
-  for (PointId id = first; id < points_.size(); ++id) {
+  std::size_t done = 0;
+  const auto insert_one = [&](PointId id) {
     if (dimension() < 3)
       add_pending(id, nullptr);
     else
       insert_in_3d(id, kNoCell, nullptr, false);
-    if (progress && ((id - first) & 0xffff) == 0xffff) progress(id - first + 1);
+    if (progress && (++done & 0xffff) == 0) progress(done);
+  };
+  for (const PointId id : leading) insert_one(id);
+  std::size_t next_lead = 0;
+  for (PointId id = first; id < points_.size(); ++id) {
+    if (next_lead < leading.size() && leading[next_lead] == id) {
+      ++next_lead;
+      continue;
+    }
+    insert_one(id);
   }
   return first;
 }

@@ -164,8 +164,12 @@ class RegularTriangulation {
   /// point at a time uses insert()). Expected O(n log n). The whole batch is validated first: on
   /// std::invalid_argument nothing was inserted. `progress`, if given, is called with the number
   /// of points inserted so far every 2^16 points (a progress line for big batches).
+  /// `lead`: the first `lead` points of the span (a far bounding frame, say) are inserted before
+  /// all the others (numbered in the spatial order all the same). A frame
+  /// left to the spatial order lands anywhere in it, and a corner inserted late replaces every
+  /// hull cell it sees (thousands when the hull is a sampled surface). Precondition: lead <= n.
   PointId insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids = nullptr,
-                 const std::function<void(std::size_t inserted)>& progress = {});
+                 const std::function<void(std::size_t inserted)>& progress = {}, std::size_t lead = 0);
 
   /// Removes a point: a vertex (its star is re-triangulated and the points it hid come back where
   /// they should), a hidden point (simply forgotten) or a pending point. Returns false and leaves

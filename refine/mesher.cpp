@@ -126,7 +126,9 @@ void Mesher::initialise() {
   const std::size_t room = points.size() + points.size() / 4 + 64;
   dt_.reserve(room);
   places_.reserve(room);
-  dt_.insert(points, &ids, [&](std::size_t) { tick(); });
+  // The frame first (see insert()): on the cube at 0.456% its corners, left to the spatial
+  // order, made eight cavities of 2,700-14,600 cells; 6.5% of the run's instructions.
+  dt_.insert(points, &ids, [&](std::size_t) { tick(); }, frame_points_);
   places_.assign(dt_.number_of_points(), {});
   for (std::size_t i = 0; i < ids.size(); ++i) {
     places_[ids[i]] = places[i];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 #include <set>
+#include <stdexcept>
 
 #include <delpsc/delaunay/regular_triangulation.h>
 
@@ -67,6 +68,23 @@ void check_orders(std::vector<WeightedPoint> pts, test::Rng& rng, const char* wh
   CHECK(test::finite_cell_quads(batch, names) == test::finite_cell_quads(one));
   CHECK(test::points_with_status(batch, PointStatus::hidden, names) ==
         test::points_with_status(one, PointStatus::hidden));
+  // The first points leading the batch (the mesher's far frame): the same cells and the same
+  // numbering as the plain batch.
+  const std::size_t lead = std::min<std::size_t>(4, pts.size());
+  RegularTriangulation led;
+  std::vector<delaunay::PointId> led_ids;
+  led.insert(pts, &led_ids, {}, lead);
+  CHECK_MESSAGE(led.is_valid(&why), why);
+  std::vector<std::uint32_t> led_names(pts.size());
+  for (std::uint32_t k = 0; k < pts.size(); ++k) {
+    CHECK(led.point(led_ids[k]) == pts[k]);
+    led_names[led_ids[k]] = k;
+  }
+  CHECK(led_ids == ids);
+  CHECK(test::finite_cell_quads(led, led_names) == test::finite_cell_quads(one));
+  CHECK(test::points_with_status(led, PointStatus::hidden, led_names) ==
+        test::points_with_status(one, PointStatus::hidden));
+  CHECK_THROWS_AS(RegularTriangulation().insert(pts, nullptr, {}, pts.size() + 1), std::invalid_argument);
 }
 
 }  // namespace

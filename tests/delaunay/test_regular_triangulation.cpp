@@ -299,3 +299,33 @@ TEST_CASE("copies, moves, clear, input validation") {
   CHECK(test::finite_cell_quads(t) == before);
   CHECK_MESSAGE(t.is_valid(&why), why);
 }
+
+// The batch's `lead` points go in before the others (the mesher's far frame: left to the
+// spatial order, a corner inserted late replaces every hull cell it sees). Observable through
+// the progress report: after the first 2^16 insertions of 2^17 points every lead point is a
+// vertex, which the spatial order alone would leave to chance (~1 in 2^8 for eight corners).
+TEST_CASE("a batch inserts its lead points first, numbered as without them") {
+  test::Rng rng(5);
+  std::vector<WeightedPoint> pts;
+  for (int k = 0; k < 8; ++k)
+    pts.push_back(WeightedPoint::from(Vec3(k & 1 ? 30 : -30, k & 2 ? 30 : -30, k & 4 ? 30 : -30)));
+  const auto inner = test::uniform_points(rng, (std::size_t{1} << 17) - 8, -1, 1);
+  pts.insert(pts.end(), inner.begin(), inner.end());
+  RegularTriangulation plain, led;
+  std::vector<PointId> plain_ids, led_ids;
+  plain.insert(pts, &plain_ids);
+  int reports = 0;
+  bool frame_in_first = true;
+  led.insert(pts, &led_ids, [&](std::size_t inserted) {
+    if (reports++ == 0) {
+      CHECK(inserted == std::size_t{1} << 16);
+      for (int k = 0; k < 8; ++k) frame_in_first = frame_in_first && led.status(led_ids[k]) == PointStatus::vertex;
+    }
+  }, 8);
+  CHECK(reports == 2);
+  CHECK(frame_in_first);
+  CHECK(led_ids == plain_ids);
+  CHECK(led.number_of_finite_cells() == plain.number_of_finite_cells());
+  std::string why;
+  CHECK_MESSAGE(led.is_valid(&why), why);
+}
