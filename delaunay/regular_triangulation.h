@@ -165,9 +165,9 @@ class RegularTriangulation {
   /// std::invalid_argument nothing was inserted. `progress`, if given, is called with the number
   /// of points inserted so far every 2^16 points (a progress line for big batches).
   /// `lead`: the first `lead` points of the span (a far bounding frame, say) are inserted before
-  /// all the others (numbered in the spatial order all the same). A frame
-  /// left to the spatial order lands anywhere in it, and a corner inserted late replaces every
-  /// hull cell it sees (thousands when the hull is a sampled surface). Precondition: lead <= n.
+  /// all the others, though numbered in the spatial order all the same: a frame left to that
+  /// order lands anywhere in it, and a corner inserted late replaces every hull cell it sees
+  /// (thousands when the hull is a sampled surface). std::invalid_argument if lead > n.
   PointId insert(std::span<const WeightedPoint> points, std::vector<PointId>* ids = nullptr,
                  const std::function<void(std::size_t inserted)>& progress = {}, std::size_t lead = 0);
 
