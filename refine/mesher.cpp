@@ -123,7 +123,7 @@ void Mesher::initialise() {
   // Room for step 2's points too (1-27% more on the CGAL demo models): the per-point arrays of
   // the triangulation and places_ then grow in place instead of being copied to new blocks
   // (reserved memory that is never written costs no page fault).
-  const std::size_t room = points.size() + points.size() / 4 + 64;
+  const std::size_t room = points.size() + points.size() / RestrictedFacets::kGrowthRoom + 64;
   dt_.reserve(room);
   places_.reserve(room);
   // The frame first (see insert()): on the cube at 0.456% its corners, left to the spatial
