@@ -291,10 +291,18 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     reach_f[i] = static_cast<float>(reach.lo[i]);
     reach_f[i + 3] = static_cast<float>(reach.hi[i]);
   }
+  // A short segment is tested against the nodes by its box alone (the triangles in the leaves
+  // keep the slab test): a node box that overlaps a short piece's box is nearly always crossed by
+  // the piece, so the slab test spared few nodes and cost more than their visits. The mesher's
+  // dual-edge windows are short (at 2% of the diagonal, 90% of them under 5% of it): meshing
+  // -2 to -6% of instructions on the 2% rows, and the same triangles visited in the same order,
+  // so the hits are the same. Long pieces need it: at half the diagonal, box-only queries were
+  // 7-10 times slower (BENCHMARKS.md, session 22). Both filters are conservative either way.
+  const bool short_piece = !is_ray && (b - a).squaredNorm() <= kShortPiece * kShortPiece * (bounds_.hi - bounds_.lo).squaredNorm();
   const auto may_hit = [&](std::uint32_t i) {
     const std::array<float, 6>& n = nodes_[i].bounds;
     return n[0] <= reach_f[3] && reach_f[0] <= n[3] && n[1] <= reach_f[4] && reach_f[1] <= n[4] &&
-           n[2] <= reach_f[5] && reach_f[2] <= n[5] && slab.may_hit(n);
+           n[2] <= reach_f[5] && reach_f[2] <= n[5] && (short_piece || slab.may_hit(n));
   };
   if (!may_hit(0)) return;
   // A node is pushed only once its box passed: the children are tested at the parent, the left

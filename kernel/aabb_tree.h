@@ -91,6 +91,9 @@ class AabbTree {
   /// Bins of the surface area heuristic, and the depth from which only median splits are made.
   static constexpr int kSahBins = 16;
   static constexpr int kSahDepth = 24;
+  /// Segments at most this fraction of the tree's diagonal long meet the inner nodes' boxes by
+  /// a box overlap test alone, longer ones and rays by the slab test too (intersect_segment).
+  static constexpr double kShortPiece = 1.0 / 16;
 
   AabbTree() = default;
 

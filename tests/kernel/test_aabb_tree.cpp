@@ -108,6 +108,34 @@ TEST_CASE("segment and ray queries equal brute force on random soups") {
   CHECK(total > 300);  // the segments do meet triangles: the comparison is not vacuous
 }
 
+// Pieces shorter than kShortPiece of the tree's diagonal skip the slab test at inner nodes (the
+// mesher's dual-edge windows): around points of the triangles, in every direction, down to pieces
+// far below a triangle's size, they must still find exactly what brute force finds.
+TEST_CASE("short segments around the triangles equal brute force") {
+  std::mt19937_64 rng(2024);
+  const Soup s = random_soup(rng, 3000, 0.05);
+  const AabbTree tree(s.vertices, s.triangles);
+  const double limit = AabbTree::kShortPiece * tree.bounds().diagonal();
+  std::uniform_real_distribution<double> u(0, 1), dir(-1, 1), scale(-8, 0);
+  std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<std::uint32_t>(s.triangles.size() - 1));
+  std::size_t total = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const auto& tri = s.triangles[pick(rng)];
+    const double r = u(rng), t = u(rng) * (1 - r);
+    const Vec3 on = s.vertices[tri[0]] + r * (s.vertices[tri[1]] - s.vertices[tri[0]]) +
+                    t * (s.vertices[tri[2]] - s.vertices[tri[0]]);
+    const Vec3 d = Vec3(dir(rng), dir(rng), dir(rng)).normalized() * (limit * std::exp2(scale(rng)));
+    const Vec3 a = on - u(rng) * d, b = a + d;
+    REQUIRE((b - a).norm() <= limit);
+    std::vector<TriangleIntersection> hits;
+    tree.intersect_segment(a, b, hits);
+    const auto got = ids_of(hits);
+    CHECK(got == brute_segment(s, a, b));
+    total += got.size();
+  }
+  CHECK(total >= 2000);  // each piece crosses the triangle it was drawn through, most of them more
+}
+
 // Triangles at x = 2^-k, each 2^-k across, all around the x axis: every SAH cut peels a few off
 // the far end, so the tree would get as deep as the soup is long without the median fallback
 // below kSahDepth (the traversal stack is fixed-size).
