@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace delpsc::kernel {
 
@@ -149,6 +150,58 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
   triangle_ids_.reserve(n);
   bounds_ = build_node(items, 0, n, 0, vertices, triangles);
   for (Slot& slot : slots_) slot.plane = plane_filter(slot.corners);
+  wide_.reserve(nodes_.size() / 2 + 1);
+  build_wide(0);
+}
+
+std::uint32_t AabbTree::build_wide(std::uint32_t node) {
+  std::array<std::uint32_t, 4> lanes{};
+  int k = 0;
+  if (nodes_[node].count > 0) {
+    lanes[k++] = node;
+  } else {
+    lanes[k++] = node + 1;
+    lanes[k++] = nodes_[node].first_or_right;
+  }
+  // Open the inner lane of largest box (half area) until four lanes: its children take its place,
+  // so the lanes stay in the binary tree's left-to-right order.
+  const auto half_area = [](const std::array<float, 6>& b) {
+    const double dx = double(b[3]) - b[0], dy = double(b[4]) - b[1], dz = double(b[5]) - b[2];
+    return dx * dy + dy * dz + dz * dx;
+  };
+  while (k < 4) {
+    int best = -1;
+    double best_area = -1;
+    for (int i = 0; i < k; ++i)
+      if (nodes_[lanes[i]].count == 0 && half_area(nodes_[lanes[i]].bounds) > best_area)
+        best = i, best_area = half_area(nodes_[lanes[i]].bounds);
+    if (best < 0) break;
+    const std::uint32_t opened = lanes[best];
+    for (int i = k; i > best + 1; --i) lanes[i] = lanes[i - 1];
+    lanes[best] = opened + 1;
+    lanes[best + 1] = nodes_[opened].first_or_right;
+    ++k;
+  }
+  const auto index = static_cast<std::uint32_t>(wide_.size());
+  WideNode wide;
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  for (auto* axis : {&wide.lo_x, &wide.lo_y, &wide.lo_z, &wide.hi_x, &wide.hi_y, &wide.hi_z}) axis->fill(kNaN);
+  wide.child.fill(0);
+  wide.count.fill(0);
+  for (int i = 0; i < k; ++i) {
+    const Node& n = nodes_[lanes[i]];
+    wide.lo_x[i] = n.bounds[0], wide.lo_y[i] = n.bounds[1], wide.lo_z[i] = n.bounds[2];
+    wide.hi_x[i] = n.bounds[3], wide.hi_y[i] = n.bounds[4], wide.hi_z[i] = n.bounds[5];
+    wide.child[i] = n.first_or_right;
+    wide.count[i] = n.count;
+  }
+  wide_.push_back(wide);
+  for (int i = 0; i < k; ++i)
+    if (nodes_[lanes[i]].count == 0) {
+      const std::uint32_t child = build_wide(lanes[i]);
+      wide_[index].child[i] = child;
+    }
+  return index;
 }
 
 std::uint32_t AabbTree::sah_split(LargeVector<BuildItem>& items, std::uint32_t begin, std::uint32_t end, int axis,
@@ -299,26 +352,44 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
   // so the hits are the same. Long pieces need it: at half the diagonal, box-only queries were
   // 7-10 times slower (BENCHMARKS.md, session 22). Both filters are conservative either way.
   const bool short_piece = !is_ray && (b - a).squaredNorm() <= kShortPiece * kShortPiece * (bounds_.hi - bounds_.lo).squaredNorm();
-  const auto may_hit = [&](std::uint32_t i) {
-    const std::array<float, 6>& n = nodes_[i].bounds;
-    return n[0] <= reach_f[3] && reach_f[0] <= n[3] && n[1] <= reach_f[4] && reach_f[1] <= n[4] &&
-           n[2] <= reach_f[5] && reach_f[2] <= n[5] && (short_piece || slab.may_hit(n));
+  // Four lanes at a time: the six float comparisons of each lane's box with the reach, lane by
+  // lane in one vector; then, for the lanes that pass, the slab test unless the piece is short.
+  using Floats = float __attribute__((vector_size(16)));
+  const auto load = [](const std::array<float, 4>& v) {
+    Floats f;
+    std::memcpy(&f, v.data(), sizeof f);
+    return f;
   };
-  if (!may_hit(0)) return;
-  // A node is pushed only once its box passed: the children are tested at the parent, the left
-  // one (the next node in memory) while the parent's line is still in cache.
-  std::array<std::uint32_t, kStackSize> stack;
+  const Floats rlx = {reach_f[0], reach_f[0], reach_f[0], reach_f[0]}, rly = {reach_f[1], reach_f[1], reach_f[1], reach_f[1]};
+  const Floats rlz = {reach_f[2], reach_f[2], reach_f[2], reach_f[2]}, rhx = {reach_f[3], reach_f[3], reach_f[3], reach_f[3]};
+  const Floats rhy = {reach_f[4], reach_f[4], reach_f[4], reach_f[4]}, rhz = {reach_f[5], reach_f[5], reach_f[5], reach_f[5]};
+  // Depth first, lanes left to right (pushed in reverse): the leaves come in the binary tree's
+  // order, so the hits do too. Each wide node popped pushes at most four entries, and the wide
+  // tree is no deeper than the binary one (below kStackSize): 3 kStackSize + 1 entries suffice.
+  struct Entry {
+    std::uint32_t index, count;  // count 0: a wide node; else a leaf's first slot and triangles
+  };
+  std::array<Entry, 4 * kStackSize> stack;
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, 0};
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (node.count == 0) {
-      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-      if (may_hit(node.first_or_right)) stack[top++] = node.first_or_right;
-      if (may_hit(self + 1)) stack[top++] = self + 1;
+    const Entry entry = stack[--top];
+    if (entry.count == 0) {
+      const WideNode& w = wide_[entry.index];
+      const auto pass = (load(w.lo_x) <= rhx) & (rlx <= load(w.hi_x)) & (load(w.lo_y) <= rhy) &
+                        (rly <= load(w.hi_y)) & (load(w.lo_z) <= rhz) & (rlz <= load(w.hi_z));
+      int lanes[4], passed = 0;
+      for (int i = 0; i < 4; ++i) {
+        if (pass[i] == 0) continue;
+        if (!short_piece &&
+            !slab.may_hit(std::array<float, 6>{w.lo_x[i], w.lo_y[i], w.lo_z[i], w.hi_x[i], w.hi_y[i], w.hi_z[i]}))
+          continue;
+        lanes[passed++] = i;
+      }
+      for (int j = passed - 1; j >= 0; --j) stack[top++] = {w.child[lanes[j]], w.count[lanes[j]]};
       continue;
     }
-    for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
+    for (std::uint32_t slot = entry.index; slot < entry.index + entry.count; ++slot) {
       if (!is_ray) {
         // Both ends strictly on one side of the plane: no hit (plane_filter). Cheaper than the
         // box, and it rejects what boxes cannot: big triangles whose box holds the segment.

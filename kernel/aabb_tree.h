@@ -5,8 +5,9 @@
 // Layout (flat arrays, no pointers): the nodes live in one vector in depth-first order, the left
 // child of node i is node i + 1 and the right child's index is stored; a leaf holds a contiguous
 // range of at most kLeafSize triangles of the tree's own copy of the triangle corners, stored in
-// leaf order next to their original ids. The tree therefore does not refer to the caller's arrays
-// after construction. Built top-down along the longest axis of the triangle centroids' box, each
+// leaf order next to their original ids. Segment and ray queries walk a copy of the same tree
+// with two levels collapsed into one, four boxes per node tested together (WideNode). The tree
+// therefore does not refer to the caller's arrays after construction. Built top-down along the longest axis of the triangle centroids' box, each
 // cut chosen by the binned surface area heuristic (kSahBins bins) down to depth kSahDepth and at
 // the median (nth_element) below it or when SAH cannot cut, so the depth is at most
 // kSahDepth + ceil(log2(n / kLeafSize)) + 1 whatever the input.
@@ -18,7 +19,7 @@
 // kernel::intersect_segment_triangle. A segment through an edge shared by two triangles is
 // reported by both, with kind edge.
 //
-// Cost: building O(n log n) time, about 180 bytes per triangle. A segment query costs
+// Cost: building O(n log n) time, about 200 bytes per triangle. A segment query costs
 // O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
 // through dense regions: it visits every leaf whose box the segment meets). Queries are const
 // and thread-safe; they append to caller-provided vectors so loops need not allocate.
@@ -175,7 +176,21 @@ class AabbTree {
   void intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const Vec3& ray_direction,
                       std::vector<TriangleIntersection>& out) const;
 
+  /// Up to four nodes of the binary tree side by side (a node's children, and where those are
+  /// inner nodes the larger one's children in its place, in left-to-right order), their boxes in
+  /// single precision by axis: segment and ray queries test four boxes at once and descend half
+  /// as many levels (intersect_line). Unused lanes have NaN bounds, which no test passes.
+  struct WideNode {
+    std::array<float, 4> lo_x, lo_y, lo_z, hi_x, hi_y, hi_z;
+    std::array<std::uint32_t, 4> child;  ///< a wide node's index (count 0) or a leaf's first slot
+    std::array<std::uint32_t, 4> count;  ///< a leaf's triangles, 0 for an inner lane
+  };
+  /// Appends the wide node over binary node `node`'s children (or over `node` itself when it is
+  /// a leaf, for a tree of one leaf) and, depth first, those below; returns its index.
+  std::uint32_t build_wide(std::uint32_t node);
+
   LargeVector<Node> nodes_;
+  LargeVector<WideNode> wide_;  ///< wide_[0] is the root's
   Box3 bounds_;
   /// A triangle's plane as a floating-point filter (plane_filter in the .cpp): normal, offset,
   /// and the error bound's factor and constant.

@@ -108,6 +108,30 @@ TEST_CASE("segment and ray queries equal brute force on random soups") {
   CHECK(total > 300);  // the segments do meet triangles: the comparison is not vacuous
 }
 
+// Small trees: a single leaf at the root, and wide nodes with unused lanes (their NaN bounds must
+// pass no test, and no lane may be lost).
+TEST_CASE("trees of one to twelve triangles answer as brute force") {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  for (int n = 1; n <= 12; ++n) {
+    const Soup s = random_soup(rng, n, 0.3);
+    const AabbTree tree(s.vertices, s.triangles);
+    REQUIRE(tree.size() == static_cast<std::size_t>(n));
+    std::size_t total = 0;
+    for (int q = 0; q < 400; ++q) {
+      const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+      std::vector<TriangleIntersection> hits;
+      tree.intersect_segment(a, b, hits);
+      CHECK(ids_of(hits) == brute_segment(s, a, b));
+      total += hits.size();
+      hits.clear();
+      tree.intersect_ray(a, b - a, hits);
+      CHECK(ids_of(hits) == brute_ray(s, a, b - a));
+    }
+    CHECK(total > 0);
+  }
+}
+
 // Pieces shorter than kShortPiece of the tree's diagonal skip the slab test at inner nodes (the
 // mesher's dual-edge windows): around points of the triangles, in every direction, down to pieces
 // far below a triangle's size, they must still find exactly what brute force finds.
