@@ -344,25 +344,20 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
     reach_f[i] = static_cast<float>(reach.lo[i]);
     reach_f[i + 3] = static_cast<float>(reach.hi[i]);
   }
-  // A short segment is tested against the nodes by its box alone (the triangles in the leaves
-  // keep the slab test): a node box that overlaps a short piece's box is nearly always crossed by
-  // the piece, so the slab test spared few nodes and cost more than their visits. The mesher's
-  // dual-edge windows are short (at 2% of the diagonal, 90% of them under 5% of it): meshing
-  // the libcgal-demo models at 2% took 0.7-4.7% fewer instructions (the sphere's long windows
-  // +0.3%), and the same triangles are visited in the same order, so the hits are the same. Long pieces need it: at half the diagonal, box-only queries were
-  // 7-10 times slower (BENCHMARKS.md, session 22). Both filters are conservative either way.
-  const bool short_piece = !is_ray && (b - a).squaredNorm() <= kShortPiece * kShortPiece * (bounds_.hi - bounds_.lo).squaredNorm();
   // Four lanes at a time: the six float comparisons of each lane's box with the reach, lane by
-  // lane in one vector; then, for the lanes that pass, the slab test unless the piece is short.
+  // lane in one vector; then the slab test for the lanes that pass. (Skipping the slab test at
+  // inner nodes for short pieces saved 1-3% of meshing's instructions on the small trees of the
+  // CGAL demo models, but on a tree of 10^6 triangles out of cache each extra node visited is a
+  // cache miss: short queries 40% slower, BENCHMARKS.md, session 22.)
   using Floats = float __attribute__((vector_size(16)));
   const auto load = [](const std::array<float, 4>& v) {
     Floats f;
     std::memcpy(&f, v.data(), sizeof f);
     return f;
   };
-  const Floats rlx = {reach_f[0], reach_f[0], reach_f[0], reach_f[0]}, rly = {reach_f[1], reach_f[1], reach_f[1], reach_f[1]};
-  const Floats rlz = {reach_f[2], reach_f[2], reach_f[2], reach_f[2]}, rhx = {reach_f[3], reach_f[3], reach_f[3], reach_f[3]};
-  const Floats rhy = {reach_f[4], reach_f[4], reach_f[4], reach_f[4]}, rhz = {reach_f[5], reach_f[5], reach_f[5], reach_f[5]};
+  const auto splat = [](float x) { return Floats{x, x, x, x}; };
+  const Floats rlx = splat(reach_f[0]), rly = splat(reach_f[1]), rlz = splat(reach_f[2]);
+  const Floats rhx = splat(reach_f[3]), rhy = splat(reach_f[4]), rhz = splat(reach_f[5]);
   // Depth first, lanes left to right (pushed in reverse): the leaves come in the binary tree's
   // order, so the hits do too. Each wide node popped pushes at most four entries, and the wide
   // tree is no deeper than the binary one (below kStackSize): 3 kStackSize + 1 entries suffice.
@@ -381,8 +376,7 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
       int lanes[4], passed = 0;
       for (int i = 0; i < 4; ++i) {
         if (pass[i] == 0) continue;
-        if (!short_piece &&
-            !slab.may_hit(std::array<float, 6>{w.lo_x[i], w.lo_y[i], w.lo_z[i], w.hi_x[i], w.hi_y[i], w.hi_z[i]}))
+        if (!slab.may_hit(std::array<float, 6>{w.lo_x[i], w.lo_y[i], w.lo_z[i], w.hi_x[i], w.hi_y[i], w.hi_z[i]}))
           continue;
         lanes[passed++] = i;
       }

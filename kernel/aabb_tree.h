@@ -7,9 +7,10 @@
 // range of at most kLeafSize triangles of the tree's own copy of the triangle corners, stored in
 // leaf order next to their original ids. Segment and ray queries walk a copy of the same tree
 // with two levels collapsed into one, four boxes per node tested together (WideNode). The tree
-// therefore does not refer to the caller's arrays after construction. Built top-down along the longest axis of the triangle centroids' box, each
-// cut chosen by the binned surface area heuristic (kSahBins bins) down to depth kSahDepth and at
-// the median (nth_element) below it or when SAH cannot cut, so the depth is at most
+// therefore does not refer to the caller's arrays after construction. Built top-down along the
+// longest axis of the triangle centroids' box, each cut chosen by the binned surface area
+// heuristic (kSahBins bins) down to depth kSahDepth and at the median (nth_element) below it or
+// when SAH cannot cut, so the depth is at most
 // kSahDepth + ceil(log2(n / kLeafSize)) + 1 whatever the input.
 //
 // Robustness: box tests are floating point but conservative (see SlabQuery in the .cpp: every
@@ -92,9 +93,6 @@ class AabbTree {
   /// Bins of the surface area heuristic, and the depth from which only median splits are made.
   static constexpr int kSahBins = 16;
   static constexpr int kSahDepth = 24;
-  /// Segments at most this fraction of the tree's diagonal long meet the inner nodes' boxes by
-  /// a box overlap test alone, longer ones and rays by the slab test too (intersect_segment).
-  static constexpr double kShortPiece = 1.0 / 16;
 
   AabbTree() = default;
 

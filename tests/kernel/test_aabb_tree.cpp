@@ -132,14 +132,14 @@ TEST_CASE("trees of one to twelve triangles answer as brute force") {
   }
 }
 
-// Pieces shorter than kShortPiece of the tree's diagonal skip the slab test at inner nodes (the
-// mesher's dual-edge windows): around points of the triangles, in every direction, down to pieces
-// far below a triangle's size, they must still find exactly what brute force finds.
+// Pieces of at most 1/16 of the tree's diagonal, like the mesher's dual-edge windows: around points
+// of the triangles, in every direction, down to pieces far below a triangle's size, they must
+// find exactly what brute force finds.
 TEST_CASE("short segments around the triangles equal brute force") {
   std::mt19937_64 rng(2024);
   const Soup s = random_soup(rng, 3000, 0.05);
   const AabbTree tree(s.vertices, s.triangles);
-  const double limit = AabbTree::kShortPiece * tree.bounds().diagonal();
+  const double limit = tree.bounds().diagonal() / 16;
   std::uniform_real_distribution<double> u(0, 1), dir(-1, 1), scale(-8, 0);
   std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<std::uint32_t>(s.triangles.size() - 1));
   std::size_t total = 0;
