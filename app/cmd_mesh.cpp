@@ -21,6 +21,7 @@
 #include <delpsc/refine/skeleton_check.h>
 
 #include "command.h"
+#include "crowding_warning.h"
 #include "input_defects.h"
 #include "mesh_report.h"
 #include "model_input.h"
@@ -219,6 +220,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     for (const auto& [p, verdict] : failing_vertices) kinds.push_back(verdict.failure);
     report_disk_failures(kinds);
   }
+  if (!g.quiet)
+    if (const std::string crowded = crowding_warning(mesh, domain.complex(), lambda, expected, o.size); !crowded.empty())
+      std::fprintf(stderr, "delpsc: %s: warning: %s\n", o.input.c_str(), crowded.c_str());
   bool g1 = true;
   if (o.check) {
     g1 = check.ok();
