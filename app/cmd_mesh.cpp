@@ -2,6 +2,7 @@
 // ∪ Skl^i (step 3) - written by extension (issue 6).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
@@ -192,6 +193,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
 
   report("vertices", mesh.vertices.size());
   report("triangles", mesh.triangles.size());
+  report("vertices_expected", static_cast<std::size_t>(std::llround(expected)));
   report("patches", std::size_t{domain.patch_count()});
   report("curves", std::size_t{domain.curve_count()});
   report("corners", std::size_t{domain.corner_count()});
@@ -328,7 +330,9 @@ Runner register_mesh(CLI::App& app) {
                  "Draw the mesh to an SVG picture: triangles coloured by patch and shaded, feature curves and "
                  "corners dark");
   app.footer(
-      "Prints key=value lines: vertices, triangles, patches, curves, corners, lambda, balls, "
+      "Prints key=value lines: vertices, triangles, vertices_expected (what the size alone needs on the model's area; "
+      "a run above 8 times it warns where its vertices crowd and what the input has there), patches, curves, corners, "
+      "lambda, balls, "
       "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
       "disk_condition (ok, or the number of vertices where it fails), min_angle, max_angle (degrees), "

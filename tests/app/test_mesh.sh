@@ -213,8 +213,10 @@ printf 'OFF\n6 8 0\n0 0 0\n0.9998476952 -0.0174524064 0\n0.9998476952 0.01745240
 expect 0 "the input folds back on itself there: its two triangles on the edge from (0, 0, 0) to (0, 0, 0.5) are 2 degrees apart" \
   -- mesh "$TMP/wedge.off" --size 4% -o "$TMP/wedge.mesh"
 grep -q "times what --size 4% needs on this model's area" "$TMP/err" || fail "wedge: no crowding warning: $(head -c 300 "$TMP/err")"
+(( $(value vertices) > 8 * $(value vertices_expected) )) || fail "wedge: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
 expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/plain.off"
 grep -q "warning:" "$TMP/err" && fail "cube 5%: warned: $(head -c 300 "$TMP/err")"
+(( $(value vertices) <= 2 * $(value vertices_expected) )) || fail "cube 5%: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
 
 # cheese.off at 4% (fetched by scripts/get-cgal-data.sh; skipped when absent) that runs into the
 # balls' floor, and the command retries once with the full clearance, which meshes it.
