@@ -52,6 +52,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
   // The sharpest edge between two triangles: a fold of a few degrees meshes, but refinement must
   // sample its two sheets apart (hand.off's 2.1° flap took 96% of 97,899 vertices at 2%).
+  // Every edge with two triangles counts: any radius, any angle below 181° (a flat edge is 180).
   const auto sharpest = protect::sharpest_fold_near(complex, 0.5 * (lo + hi), std::numeric_limits<double>::infinity(), 181);
   report("sharpest_fold_degrees", sharpest ? sharpest->dihedral_degrees : 180.0);
   report("warnings", model.report.warnings.size());
@@ -59,10 +60,10 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     const Vec3& a = complex.vertices[complex.edges[sharpest->edge][0]];
     const Vec3& b = complex.vertices[complex.edges[sharpest->edge][1]];
     std::fprintf(stderr,
-                 "delpsc: warning: %s: the surface folds back on itself: the two triangles on the edge from (%.6g, "
-                 "%.6g, %.6g) to (%.6g, %.6g, %.6g) are %.2g degrees apart; `delpsc mesh` samples the two sheets apart "
-                 "there, which can take many times the vertices the size asks for\n",
-                 o.input.c_str(), a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), sharpest->dihedral_degrees);
+                 "delpsc: warning: %s: two triangles meet at only %.3g degrees, on the edge from (%.6g, %.6g, %.6g) "
+                 "to (%.6g, %.6g, %.6g) (a fold of the surface, or a very sharp edge); `delpsc mesh` samples the "
+                 "two sheets apart there, which can take many times the vertices the size asks for\n",
+                 o.input.c_str(), sharpest->dihedral_degrees, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
   }
   if (crossing > 0 && !g.quiet)
     std::fprintf(stderr,

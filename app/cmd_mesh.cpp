@@ -180,12 +180,13 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   const refine::SkeletonReport check = refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm());
   const refine::QualitySummary quality = refine::summarize_quality(mesh);
   phases.emplace_back("check", seconds_since(t_check));
-  // Issue 6: the distances to the input, sampled at spacing λ/2 - lower bounds at most λ/2
-  // below the true ones, in practice within a few percent (refine/approximation_error.h).
+  // Issue 6: the distances to the input, sampled at spacing λ/2 (coarser only for a run stopped
+  // far short of its size: approximation_spacing) - lower bounds at most the spacing below the
+  // true ones, in practice within a few percent (refine/approximation_error.h).
   progress.phase("approximation", mesh.vertices.size());
   const auto t_approximation = Clock::now();
   refine::ApproximationOptions approximation_options;
-  approximation_options.sample_spacing = lambda / 2;
+  approximation_options.sample_spacing = approximation_spacing(domain.complex(), lambda, mesh.vertices.size());
   const refine::ApproximationError approximation = refine::measure_approximation(mesh, domain, approximation_options);
   const double seconds_approximation = seconds_since(t_approximation);
   phases.emplace_back("approximation", seconds_approximation);
@@ -193,7 +194,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
 
   report("vertices", mesh.vertices.size());
   report("triangles", mesh.triangles.size());
-  report("vertices_expected", static_cast<std::size_t>(std::llround(expected)));
+  // Clamped where llround would overflow (sizes of 1e-9 of the diagonal and below).
+  report("vertices_expected", static_cast<std::size_t>(std::llround(std::min(expected, 1e18))));
   report("patches", std::size_t{domain.patch_count()});
   report("curves", std::size_t{domain.curve_count()});
   report("corners", std::size_t{domain.corner_count()});
@@ -224,7 +226,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   }
   if (!g.quiet)
     if (const std::string crowded = crowding_warning(mesh, domain.complex(), lambda, expected, o.size); !crowded.empty())
-      std::fprintf(stderr, "delpsc: %s: warning: %s\n", o.input.c_str(), crowded.c_str());
+      std::fprintf(stderr, "delpsc: warning: %s: %s\n", o.input.c_str(), crowded.c_str());
   bool g1 = true;
   if (o.check) {
     g1 = check.ok();
@@ -331,7 +333,8 @@ Runner register_mesh(CLI::App& app) {
                  "corners dark");
   app.footer(
       "Prints key=value lines: vertices, triangles, vertices_expected (what the size alone needs on the model's area; "
-      "a run above 8 times it warns where its vertices crowd and what the input has there), patches, curves, corners, "
+      "a run above 8 times it warns, unless -q, where its vertices crowd and what the input has there), patches, "
+      "curves, corners, "
       "lambda, balls, "
       "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "

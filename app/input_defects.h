@@ -27,7 +27,7 @@ inline std::string input_defect_near(const protect::Complex& complex, const Vec3
     const Vec3& b = complex.vertices[complex.edges[fold->edge][1]];
     std::snprintf(text, sizeof text,
                   "the input folds back on itself there: its two triangles on the edge from (%.6g, %.6g, %.6g) to "
-                  "(%.6g, %.6g, %.6g) are %.2g degrees apart - repair the model there",
+                  "(%.6g, %.6g, %.6g) are %.3g degrees apart - repair the model there",
                   a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), fold->dihedral_degrees);
   } else if (const auto wedge = protect::narrowest_corner_near(complex, where, lambda, kDefectDegrees)) {
     const Vec3& c = complex.vertices[complex.corner_vertex[wedge->corner]];
@@ -45,7 +45,7 @@ inline std::string input_defect_near(const protect::Complex& complex, const Vec3
                     wedge->nearest_curve, wedge->clearance, 2 * half_gap, half_gap, half_gap / (box.hi - box.lo).norm());
     }
     std::snprintf(text, sizeof text,
-                  "curves %u and %u leave the corner at (%.6g, %.6g, %.6g) only %.2g degrees apart%s - a needle or a "
+                  "curves %u and %u leave the corner at (%.6g, %.6g, %.6g) only %.3g degrees apart%s - a needle or a "
                   "sliver of the surface between them? repair the model there",
                   wedge->curves[0], wedge->curves[1], c.x(), c.y(), c.z(), wedge->angle_degrees, need);
   }

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -21,14 +22,30 @@
 
 namespace delpsc::app {
 
-/// Expected output vertices for facet_size λ (see above).
-inline double expected_vertices(const protect::Complex& complex, double lambda) {
+/// The complex's surface area (the sum of its triangles'). O(triangles).
+inline double surface_area(const protect::Complex& complex) {
   double area = 0;
   for (const auto& t : complex.triangles) {
     const Vec3& a = complex.vertices[t[0]];
     area += 0.5 * (complex.vertices[t[1]] - a).cross(complex.vertices[t[2]] - a).norm();
   }
-  return 0.66 * area / (lambda * lambda);
+  return area;
+}
+
+/// Expected output vertices for facet_size λ (see above).
+inline double expected_vertices(const protect::Complex& complex, double lambda) {
+  return 0.66 * surface_area(complex) / (lambda * lambda);
+}
+
+/// The sample spacing of the report's distances to the input (refine/approximation_error.h):
+/// λ/2, but no finer than about 8 samples a vertex of the output (at least 25,000 vertices'
+/// worth, where every run at λ/2 stays: ~6 samples a vertex). A run that --max-vertices stopped
+/// far short of its size would otherwise sample the input at a spacing it never reached:
+/// sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9 samples, at 1e-10 it ran out of
+/// memory. hausdorff_spacing reports the spacing used.
+inline double approximation_spacing(const protect::Complex& complex, double lambda, std::size_t output_vertices) {
+  const double most_samples = 8 * std::max(static_cast<double>(output_vertices), 25000.0);
+  return std::max(lambda / 2, std::sqrt(surface_area(complex) / most_samples));
 }
 
 /// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.5-1.8 KB, see above).

@@ -16,7 +16,7 @@ VertexCrowd densest_crowd(std::span<const Vec3> vertices, double cell) {
   kernel::Box3 box;
   for (const Vec3& v : vertices)
     if (v.allFinite()) box.extend(v);
-  if (box.empty()) return crowd;  // no finite vertex
+  if (box.empty() || !(box.hi - box.lo).allFinite()) return crowd;  // no finite vertex, or an extent overflowing
   // 21 bits per axis pack a cube's index in 63; 2^20 cubes an axis leave a margin for rounding.
   constexpr double kMostCubes = double{1 << 20};
   cell = std::max(cell, (box.hi - box.lo).maxCoeff() / kMostCubes);

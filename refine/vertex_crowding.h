@@ -1,6 +1,6 @@
 // Where an output mesh's vertices crowd most, for the warning of `delpsc mesh` when a run needs
 // far more vertices than its size asks for. Such runs are nearly always one spot of the input:
-// libcgal-demo's hand.off at 2% makes 97,899 vertices where ~3,500 cover its area, and 96% of
+// libcgal-demo's hand.off at 2% makes 97,899 vertices where 1,741 cover its area, and 96% of
 // them mesh one sliver triangle folded back at 2.1° onto its neighbours (two sheets 0.0003-0.003
 // λ apart, which refinement must separate; BENCHMARKS.md, session 23). Naming that spot tells the
 // user what to repair.
@@ -20,9 +20,10 @@ struct VertexCrowd {
 };
 
 /// The crowd around the grid cube of side `cell` holding the most of `vertices` (cubes aligned
-/// on the vertices' bounding box; ties to the cube met first). Empty result when there are no
-/// finite vertices or `cell` is not positive and finite; a cell so small that the box spans more
-/// than 2^20 of them along an axis is enlarged to fit. Expected O(n) time and memory.
+/// on the vertices' bounding box; of cubes with equal counts, the first to reach that count).
+/// Empty result when there are no finite vertices, `cell` is not positive and finite, or the
+/// box's extent overflows; a cell so small that the box spans more than 2^20 of them along an
+/// axis is enlarged to fit. Expected O(n) time and memory.
 VertexCrowd densest_crowd(std::span<const Vec3> vertices, double cell);
 
 }  // namespace delpsc::refine

@@ -65,13 +65,13 @@ expect 2 "" -- info "$TMP/sheet.off" --angle -5
 # The sharpest fold: a prism whose apex edge is 2 degrees is warned about with the edge; a cube's
 # edges are 90 degrees and the flat L-shaped sheet's 180, without a warning.
 printf 'OFF\n6 8 0\n0 0 0\n0.9998476952 -0.0174524064 0\n0.9998476952 0.0174524064 0\n0 0 0.5\n0.9998476952 -0.0174524064 0.5\n0.9998476952 0.0174524064 0.5\n3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n' >"$TMP/wedge.off"
-expect 0 "folds back on itself: the two triangles on the edge from (0, 0, 0) to (0, 0, 0.5) are 2 degrees apart" -- info "$TMP/wedge.off"
+expect 0 "two triangles meet at only 2 degrees, on the edge from (0, 0, 0) to (0, 0, 0.5)" -- info "$TMP/wedge.off"
 python3 -c 'import sys; sys.exit(abs(float(sys.argv[1]) - 2) > 1e-6)' "$(value sharpest_fold_degrees)" \
   || fail "wedge: sharpest_fold_degrees=$(value sharpest_fold_degrees)"
 write_cube "$TMP/cube.off"
 expect 0 "" -- info "$TMP/cube.off"
 [[ "$(value sharpest_fold_degrees)" == "90" ]] || fail "cube: sharpest_fold_degrees=$(value sharpest_fold_degrees)"
-grep -q "folds back" "$TMP/err" && fail "cube: fold warning: $(cat "$TMP/err")"
+grep -q "meet at only" "$TMP/err" && fail "cube: fold warning: $(cat "$TMP/err")"
 expect 0 "" -- info "$TMP/ell.off"
 [[ "$(value sharpest_fold_degrees)" == "180" ]] || fail "flat sheet: sharpest_fold_degrees=$(value sharpest_fold_degrees)"
 finish

@@ -42,6 +42,20 @@ TEST_CASE("densest_crowd: nothing to find") {
   CHECK(refine::densest_crowd(nan, 1.0).vertices == 0);
 }
 
+TEST_CASE("densest_crowd: a cluster at the box's far corner with a cell far below the extent") {
+  // The cell becomes 2^-20 of the extent, so the cluster's cube has index 2^20 along each axis:
+  // the largest the 21-bit keys hold. A wrong enlargement would overflow them and find no block.
+  std::vector<Vec3> points{{0, 0, 0}, {0.5, 0.25, 0.75}};
+  for (int n = 0; n < 5; ++n) points.emplace_back(1, 1, 1);
+  const refine::VertexCrowd crowd = refine::densest_crowd(points, 1e-12);
+  CHECK(crowd.fullest_cube == 5);
+  CHECK(crowd.vertices == 5);
+  CHECK((crowd.centre - Vec3(1, 1, 1)).norm() < 1e-12);
+  // An extent that overflows to infinity gives no crowd rather than undefined conversions.
+  const std::vector<Vec3> huge{{-1.7e308, 0, 0}, {1.7e308, 0, 0}};
+  CHECK(refine::densest_crowd(huge, 1.0).vertices == 0);
+}
+
 TEST_CASE("densest_crowd: a cell far below the extent is enlarged to fit the keys") {
   // 2^40 cells an axis would not fit 21 bits: the cell grows to 2^-20 of the extent, so the two
   // points near the origin share a cube and the far one is alone.
