@@ -83,7 +83,7 @@ Runner register_info(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
   app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL or PLY")->required();
   app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(range_not_nan(0.0, 180.0));
   app.footer(
       "Prints key=value lines: format, vertices, triangles, merged_vertices, "
       "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "

@@ -157,11 +157,12 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     // --angle 100, whose 90° creases are then no curves. It ended as an 'internal error', exit 1.
     // A defect of the input within λ of that ball is named (input_defects.h).
     const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
-    char generic[200];
+    char generic[320];
     std::snprintf(generic, sizeof generic,
                   "the surface may fold sharply at edges that are no feature curves at --angle %g (a smaller angle "
-                  "makes them curves), or nearly touch itself",
-                  o.angle);
+                  "makes them curves), a curve turn sharply at a vertex that is no corner at --corner-angle %g (a "
+                  "smaller angle makes it one), or the surface nearly touch itself",
+                  o.angle, o.corner_angle);
     throw Failure{kBadInput, o.input + ": refinement needed protecting balls smaller than the model allows (" +
                                  e.what() + "); " + (defect.empty() ? std::string(generic) : defect)};
   }
@@ -304,22 +305,23 @@ Runner register_mesh(CLI::App& app) {
                  "bounding-box diagonal (default 2%)");
   app.add_option("--angle", o->angle,
                  "Feature angle in degrees: an edge whose face normals differ by more is sharp")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(range_not_nan(0.0, 180.0));
   app.add_option("--corner-angle", o->corner_angle,
                  "A curve turning by more than this many degrees at a vertex gets a corner there")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(range_not_nan(0.0, 180.0));
   app.add_option("--facet-distance", o->facet_distance,
                  "Largest distance between a triangle's circumcentre and the surface point it stands for (CGAL's "
                  "facet_distance), a length or a percentage of the diagonal (default: off)");
   app.add_option("--facet-angle", o->facet_angle,
                  "Smallest angle, in degrees, of triangles away from the features (vertices all off the protecting "
                  "balls); at most 30, the largest bound for which refinement is known to end (default: off)")
-      ->check(CLI::Range(0.0, refine::kMaxFacetAngleDegrees));
+      ->check(range_not_nan(0.0, refine::kMaxFacetAngleDegrees));
   app.add_option("--max-vertices", o->max_vertices,
                  "Stop refining at this many vertices; the mesh reached is still written, exit code 1 (default: 50 times "
                  "the vertices the size alone needs, within two and twenty million and what 80% of memory holds at "
                  "1.8 KB each; a size needing more than ten million, or more than memory holds, is refused unless "
-                 "this is given; 0: no limit)");
+                 "this is given; 0: no limit)")
+      ->check(CLI::Range(0.0, 1e15));  // a negative or overflowing count wrapped to "unlimited"
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");

@@ -157,10 +157,10 @@ Runner register_protect(CLI::App& app) {
       ->required();
   app.add_option("--angle", o->angle,
                  "Feature angle in degrees: an edge whose face normals differ by more is sharp")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(range_not_nan(0.0, 180.0));
   app.add_option("--corner-angle", o->corner_angle,
                  "A curve turning by more than this many degrees at a vertex gets a corner there")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(range_not_nan(0.0, 180.0));
   app.add_option("--balls", o->balls_path,
                  "Write the balls as text: 'corner ID X Y Z R' lines, then per curve "
                  "'curve ID START END N' and its N interior balls 'X Y Z R' in order");

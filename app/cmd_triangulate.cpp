@@ -44,6 +44,7 @@ std::vector<WeightedPoint> load(const TriangulateOptions& o) {
 
 int run(const TriangulateOptions& o, const GlobalOptions& g) {
   const std::vector<WeightedPoint> points = load(o);
+  if (points.empty()) throw Failure{kBadInput, (o.input.empty() ? o.generate : o.input) + ": no points"};
   if (!g.quiet && g.verbosity > 0) std::fprintf(stderr, "delpsc: %zu points read\n", points.size());
 
   delaunay::RegularTriangulation dt;
@@ -53,6 +54,13 @@ int run(const TriangulateOptions& o, const GlobalOptions& g) {
 
   report("points", points.size());
   report("dimension", static_cast<long long>(dt.dimension()));
+  // Below four affinely independent points there is no tetrahedron: vertices, cells and the
+  // rest are 0 by definition, which a bare report would leave to be guessed.
+  if (dt.dimension() < 3 && !g.quiet)
+    std::fprintf(stderr,
+                 "delpsc: warning: the points span only dimension %d (all on a plane, a line or one spot): no "
+                 "tetrahedra, so no vertices\n",
+                 dt.dimension());
   report("vertices", dt.number_of_vertices());
   report("hidden", dt.number_of_hidden());
   report("finite_cells", dt.number_of_finite_cells());
@@ -73,8 +81,11 @@ int run(const TriangulateOptions& o, const GlobalOptions& g) {
     std::vector<delaunay::PointId> vertices;
     for (delaunay::PointId id = 0; id < dt.number_of_points(); ++id)
       if (dt.status(id) == delaunay::PointStatus::vertex) vertices.push_back(id);
+    if (o.remove > vertices.size())
+      throw Failure{kBadInput, "--remove " + std::to_string(o.remove) + ": the triangulation has only " +
+                                   std::to_string(vertices.size()) + " vertices"};
     std::mt19937_64 rng(o.seed);
-    const std::size_t k = std::min(o.remove, vertices.size());
+    const std::size_t k = o.remove;
     for (std::size_t i = 0; i < k; ++i) std::swap(vertices[i], vertices[i + rng() % (vertices.size() - i)]);
     std::size_t removed = 0;
     const auto t1 = std::chrono::steady_clock::now();

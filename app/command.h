@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -36,6 +37,18 @@ inline void report(const char* key, double value) { final_report().add(key, valu
 inline void report(const char* key, long long value) { final_report().add(key, value); }
 inline void report(const char* key, std::size_t value) { final_report().add(key, value); }
 inline void report(const char* key, bool value) { final_report().add(key, value); }
+
+/// CLI::Range(lo, hi) that also refuses NaN: Range compares, and every comparison with NaN is
+/// false, so "--facet-angle nan" passed it and failed inside the mesher as an internal error.
+inline CLI::Validator range_not_nan(double lo, double hi) {
+  const CLI::Validator not_nan(
+      [](std::string& text) {
+        double x = 0;
+        return CLI::detail::lexical_cast(text, x) && std::isnan(x) ? std::string("NaN is not a value here") : std::string();
+      },
+      "", "not NaN");
+  return CLI::Range(lo, hi) & not_nan;
+}
 
 /// A subcommand registers its options on `app` and returns the function that runs it.
 using Runner = std::function<int(const GlobalOptions&)>;

@@ -61,7 +61,9 @@ int main(int argc, char** argv) {
   } catch (const Failure& f) {
     error = f.message, code = f.code;
   } catch (const std::bad_alloc&) {
-    error = "out of memory", code = kCheckFailed;
+    error = "out of memory: the job needs more than this machine (or its limits) gives; a larger --size, or a "
+            "--max-vertices cap, bounds a mesh's memory",
+    code = kCheckFailed;
   } catch (const std::exception& e) {
     error = std::string("internal error: ") + e.what(), code = kCheckFailed;
   }

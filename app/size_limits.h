@@ -38,13 +38,16 @@ inline double expected_vertices(const protect::Complex& complex, double lambda) 
 }
 
 /// The sample spacing of the report's distances to the input (refine/approximation_error.h):
-/// λ/2, but no finer than about 8 samples a vertex of the output (at least 25,000 vertices'
-/// worth, where every run at λ/2 stays: ~6 samples a vertex). A run that --max-vertices stopped
-/// far short of its size would otherwise sample the input at a spacing it never reached:
-/// sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9 samples, at 1e-10 it ran out of
-/// memory. hausdorff_spacing reports the spacing used.
+/// λ/2, but no finer than about 8 samples a vertex of the output (at least 1,000 vertices'
+/// worth): a run at λ/2 takes ~6 samples a vertex, so every run that reaches 3/4 of
+/// expected_vertices keeps λ/2 (the libcgal-demo models reach 0.87 to 60 times it at 2%). A run
+/// that --max-vertices stopped far short of its size would otherwise sample the input at a
+/// spacing it never reached: sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9
+/// samples, at 1e-10 it ran out of memory; and each sample is slow against the long slivers of
+/// such a mesh (~50 µs a sample, against ~1 µs on a finished one). hausdorff_spacing reports the
+/// spacing used.
 inline double approximation_spacing(const protect::Complex& complex, double lambda, std::size_t output_vertices) {
-  const double most_samples = 8 * std::max(static_cast<double>(output_vertices), 25000.0);
+  const double most_samples = 8 * std::max(static_cast<double>(output_vertices), 1000.0);
   return std::max(lambda / 2, std::sqrt(surface_area(complex) / most_samples));
 }
 

@@ -125,7 +125,9 @@ struct MesherOptions {
   double facet_distance = 0;      ///< CGAL's facet_distance, absolute; 0: off (facet_criteria.h)
   double facet_angle = 0;         ///< lower bound on angles of all-unweighted triangles, degrees,
                                   ///< at most kMaxFacetAngleDegrees (30); 0: off
-  std::size_t max_vertices = 0;   ///< stop when the mesh has this many vertices (0: no limit)
+  /// Stop when the mesh has this many vertices (0: no limit). With more protecting balls than
+  /// this, run() stops before inserting anything (stats().message says so; the output is empty).
+  std::size_t max_vertices = 0;
   int seeds_per_patch = 8;        ///< seeds on each patch without boundary (>= 4 advised)
   /// Start step 2 from a well-spread sample of the patches (initial_sample.h, and the file
   /// comment) besides the balls and seeds; false: from the balls and seeds alone, as the paper.

@@ -51,8 +51,9 @@ expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/fine.vtu" --check
 [[ "$(value vertices)" -gt "$v" ]] || fail "5% gave $(value vertices) vertices, 10% gave $v"
 [[ "$(value disk_condition)" == "ok" ]] || fail "5%: disk_condition=$(value disk_condition)"
 
-# The vertex cap: exit 1, a message, the failing vertices listed, the mesh reached written.
-expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 40 -o "$TMP/capped.off"
+# The vertex cap: exit 1, a message, the failing vertices listed, the mesh reached written (a cap
+# above the 125 balls at 5%: below them the run stops before refining, tested further down).
+expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 150 -o "$TMP/capped.off"
 [[ -s "$TMP/capped.off" ]] || fail "--max-vertices: no mesh written"
 grep -q "disk condition D[1-4] fails at vertex" "$TMP/err" || fail "--max-vertices: failing vertices not listed"
 [[ "$(value disk_condition)" =~ ^[0-9]+$ ]] || fail "--max-vertices: disk_condition=$(value disk_condition)"
@@ -218,6 +219,17 @@ grep -q "the input folds back on itself there: its two triangles on the edge fro
 expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/plain.off"
 grep -q "warning:" "$TMP/err" && fail "cube 5%: warned: $(head -c 300 "$TMP/err")"
 (( $(value vertices) <= 2 * $(value vertices_expected) )) || fail "cube 5%: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
+
+# More protecting balls than --max-vertices: the run stops before inserting any (inserting them
+# alone took fandisk at 0.01% over a minute and 4 GB under a cap of 50); exit 1, empty mesh.
+expect 1 "before refining: the protecting balls alone number" -- mesh "$TMP/cube.off" --size 0.1% --max-vertices 50 -o "$TMP/balls_only.off"
+[[ "$(value vertices)" == "0" ]] || fail "balls over the cap: vertices=$(value vertices)"
+# NaN and negative counts are refused as usage errors (NaN passed the ranges and ended as an
+# internal error; a negative cap wrapped to 'no limit').
+expect 2 "NaN" -- mesh "$TMP/cube.off" --facet-angle nan -o "$TMP/nan.off"
+expect 2 "NaN" -- mesh "$TMP/cube.off" --angle nan -o "$TMP/nan.off"
+expect 2 "" -- mesh "$TMP/cube.off" --max-vertices -50 -o "$TMP/neg.off"
+expect 2 "" -- mesh "$TMP/cube.off" --max-vertices 18446744073709551616 -o "$TMP/neg.off"
 
 # A run --max-vertices stops far short of its size measures its distances to the input at a
 # spacing its own vertices justify (app/size_limits.h, approximation_spacing): at λ/2 this one

@@ -18,8 +18,13 @@ expect 0 "" -- triangulate "$TMP/pts.txt" --check
 
 # Coplanar input never reaches dimension 3: reported, not a crash.
 printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$TMP/flat.txt"
-expect 0 "" -- triangulate "$TMP/flat.txt"
+expect 0 "the points span only dimension 2" -- triangulate "$TMP/flat.txt"
 [[ "$(value dimension)" == "2" ]] || fail "coplanar set: dimension $(value dimension)"
+# An empty point file is an error, not a report of nothing; so is removing more vertices than
+# there are (it was silently cut to what there was).
+: >"$TMP/empty.txt"
+expect 2 "empty.txt: no points" -- triangulate "$TMP/empty.txt"
+expect 2 "--remove 1000: the triangulation has only 5 vertices" -- triangulate --generate uniform:5 --remove 1000
 
 expect 2 "cannot open" -- triangulate "$TMP/missing.bin"
 printf 'garbage here\n' >"$TMP/bad.txt"

@@ -102,6 +102,16 @@ TEST_CASE("the initial sample's proven cover spares first queries, and only with
   capped.run();
   CHECK(capped.stats().sampled == 0);
   CHECK(capped.stats().cover_skipped == 0);
+  // A cap below the balls' count cannot be kept: the run stops before inserting anything and
+  // says why, instead of triangulating every ball (the slowest case there is).
+  options.max_vertices = set.live_ids().size() - 1;
+  refine::Mesher below(domain, balls, options);
+  below.run();
+  CHECK(below.stats().stopped_at_max_vertices);
+  CHECK(below.stats().message.find("the protecting balls alone number " + std::to_string(set.live_ids().size())) !=
+        std::string::npos);
+  CHECK(below.domain_vertex_count() == 0);
+  CHECK(below.output().vertices.empty());
 }
 
 TEST_CASE("the sample's clearance from the balls: the full one (delpsc mesh's retry) meshes too, and fewer points") {
