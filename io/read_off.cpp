@@ -53,7 +53,19 @@ void parse_off(std::string_view bytes, SoupBuilder& out) {
   if (!parse_int(tok, nf))
     out.fail(at_line(in.line()), "expected the face count, found " + quoted(tok));
   if (nv < 0 || nf < 0) out.fail(at_line(header_line), "negative vertex or face count");
-  in.next_line();  // the edge count, if any, is meaningless
+  // The edge count, if any, is meaningless and skipped with the rest of the line; but three more
+  // numbers there are vertex data written without line breaks, which this line-based reader
+  // (extras such as colours ride along on a vertex's line) cannot take apart: say so, rather
+  // than that the counts exceed the bytes left.
+  {
+    in.token_on_line();  // the edge count
+    int more = 0;
+    while (more < 3 && !in.token_on_line().empty()) ++more;
+    if (more == 3)
+      out.fail(at_line(in.line()), "more numbers follow the counts on their line: OFF puts each vertex and each "
+                                   "face on a line of its own");
+  }
+  in.next_line();
 
   // A count is absurd if the rest of the file cannot hold that many records of even 2 bytes;
   // below that, a file merely too short fails naturally at its end, with a line number. Capacity

@@ -107,6 +107,7 @@ TEST_CASE("OFF: errors name the line and the problem") {
       {"OFF\n99999999999 1 0\n0 0 0\n", "line 2: the header announces 99999999999 vertices"},
       {"OFF\n3 4000000000 0\n0 0 0\n1 0 0\n0 1 0\n", "announces 4000000000 faces"},
       {"OFF\n-3 1 0\n", "negative vertex or face count"},
+      {"OFF\n3 1 0 0 0 0 1 0 0 0 1 0 3 0 1 2\n", "line 2: more numbers follow the counts on their line"},
       {"OFF\nthree 1 0\n", "expected the vertex count, found 'three'"},
       {"4OFF\n3 1 0\n", "OFF variant '4OFF' is not supported"},
       {"OFF BINARY\n", "binary OFF is not supported"},
