@@ -283,7 +283,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     if (s.stopped_at_max_vertices && !o.max_vertices)
       std::fprintf(stderr,
                    "delpsc: %zu vertices is the automatic cap for this model at --size %s (50 times what the size "
-                   "alone needs, within [2e6, 2e7] and what 80%% of this machine's memory holds): a thin feature or a crossing of the model may stop refinement from ending; "
+                   "alone needs, within [2e6, 2e7] and what 80%% of the memory this process may use holds): a thin feature or a crossing of the model may stop refinement from ending; "
                    "--max-vertices N raises the cap, --max-vertices 0 removes it\n",
                    options.max_vertices, o.size.c_str());
     list_failing(mesher, g);

@@ -9,6 +9,7 @@
 //    BENCHMARKS.md, "Input checks and memory of delpsc mesh").
 #pragma once
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -54,13 +55,26 @@ inline double approximation_spacing(const protect::Complex& complex, double lamb
 /// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.5-1.8 KB, see above).
 inline constexpr double kMeshBytesPerVertex = 1.8e3;
 
-/// This machine's physical memory in bytes (POSIX sysconf; 16 GB if it cannot tell).
+/// The memory this process may use, in bytes: the machine's physical memory (POSIX sysconf; 16 GB
+/// if it cannot tell), or less where a limit says so - the address-space limit (`ulimit -v`) and
+/// a cgroup's memory.max (a container, a CI job). A size the machine held but the limit did not
+/// ran until the allocator failed (fandisk at 0.03% under `ulimit -v 8000000`: 4.5 GB, then out
+/// of memory) instead of being refused up front.
 inline double physical_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? double(pages) * double(page) : 16e9;
+  double bytes = pages > 0 && page > 0 ? double(pages) * double(page) : 16e9;
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+  if (std::FILE* f = std::fopen("/sys/fs/cgroup/memory.max", "r")) {  // "max" when unlimited
+    double cgroup = 0;
+    if (std::fscanf(f, "%lf", &cgroup) == 1 && cgroup > 0) bytes = std::min(bytes, cgroup);
+    std::fclose(f);
+  }
+  return bytes;
 }
 
-/// The most vertices a run may reach on this machine: what fits in 80% of its memory. Past
+/// The most vertices a run may reach: what fits in 80% of the memory it may use. Past
 /// that the system would kill the process (or swap for hours) instead of our cap ending it
 /// with a message and the mesh reached.
 inline double vertices_fitting_in_memory() { return 0.8 * physical_memory_bytes() / kMeshBytesPerVertex; }
@@ -119,13 +133,13 @@ inline void reject_facet_distance(double distance, double lambda, const std::str
 /// Peak memory of `delpsc triangulate` per point, rounded up (uniform:1000000: 297 MB RSS).
 inline constexpr double kTriangulationBytesPerPoint = 320;
 
-/// Bad-input exit when triangulating n points would not fit in 80% of this machine's memory.
+/// Bad-input exit when triangulating n points would not fit in 80% of the memory this process may use.
 inline void reject_points_beyond_memory(std::size_t n) {
   const double need = double(n) * kTriangulationBytesPerPoint;
   if (need <= 0.8 * physical_memory_bytes()) return;
   char message[320];
   std::snprintf(message, sizeof message,
-                "%zu points need about %.3g GB to triangulate, more than this machine's memory (%.3g GB) allows; "
+                "%zu points need about %.3g GB to triangulate, more than the memory this process may use (%.3g GB) allows; "
                 "use fewer points",
                 n, need * 1e-9, physical_memory_bytes() * 1e-9);
   throw Failure{kBadInput, message};

@@ -231,6 +231,16 @@ expect 2 "NaN" -- mesh "$TMP/cube.off" --angle nan -o "$TMP/nan.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices -50 -o "$TMP/neg.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices 18446744073709551616 -o "$TMP/neg.off"
 
+# The memory a process may use includes its address-space limit: under `ulimit -v` of 3 GB a
+# size needing ~9.5 GB is refused up front instead of running until the allocator fails; a
+# small one still meshes.
+( ulimit -v 3000000; "$DELPSC" mesh "$TMP/cube.off" --size 0.05% -o "$TMP/big.off" ) >"$TMP/out" 2>"$TMP/err"
+code=$?
+if [[ $code -eq 2 ]] && grep -q "is too small for this model" "$TMP/err"; then pass; else
+  fail "ulimit -v 3 GB, cube at 0.05%: exit $code, $(head -c 300 "$TMP/err")"; fi
+( ulimit -v 3000000; "$DELPSC" mesh "$TMP/cube.off" --size 10% -o "$TMP/small.off" ) >"$TMP/out" 2>"$TMP/err" \
+  && pass || fail "ulimit -v 3 GB, cube at 10%: $(head -c 300 "$TMP/err")"
+
 # A run --max-vertices stops far short of its size measures its distances to the input at a
 # spacing its own vertices justify (app/size_limits.h, approximation_spacing): at λ/2 this one
 # sampled ~10^18 points and ran out of memory.

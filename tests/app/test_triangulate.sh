@@ -40,7 +40,7 @@ expect 2 "unknown kind" -- triangulate --generate cube:10
 # More points than memory holds (320 bytes each, 80% of memory): refused before any is made.
 # Below 70 GB of memory 2e8 points are too many; a larger machine would try them, so skip there.
 if [ "$(awk '/MemTotal/ {print $2}' /proc/meminfo)" -lt 70000000 ]; then
-  expect 2 "more than this machine's memory" -- triangulate --generate uniform:200000000
+  expect 2 "more than the memory this process may use" -- triangulate --generate uniform:200000000
 fi
 expect 2 "" -- triangulate --generate uniform:10 --remove -3
 expect 2 "exactly one" -- triangulate "$TMP/pts.txt" --generate uniform:10
