@@ -187,7 +187,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("approximation", mesh.vertices.size());
   const auto t_approximation = Clock::now();
   refine::ApproximationOptions approximation_options;
-  approximation_options.sample_spacing = approximation_spacing(domain.complex(), lambda, mesh.vertices.size());
+  approximation_options.sample_spacing = approximation_spacing(lambda, expected, mesh.vertices.size());
   const refine::ApproximationError approximation = refine::measure_approximation(mesh, domain, approximation_options);
   const double seconds_approximation = seconds_since(t_approximation);
   phases.emplace_back("approximation", seconds_approximation);

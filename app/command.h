@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <string>
 
@@ -43,8 +44,7 @@ inline void report(const char* key, bool value) { final_report().add(key, value)
 inline CLI::Validator range_not_nan(double lo, double hi) {
   const CLI::Validator not_nan(
       [](std::string& text) {
-        double x = 0;
-        return CLI::detail::lexical_cast(text, x) && std::isnan(x) ? std::string("NaN is not a value here") : std::string();
+        return std::isnan(std::strtod(text.c_str(), nullptr)) ? std::string("NaN is not a value here") : std::string();
       },
       "", "not NaN");
   return CLI::Range(lo, hi) & not_nan;

@@ -23,33 +23,33 @@
 
 namespace delpsc::app {
 
-/// The complex's surface area (the sum of its triangles'). O(triangles).
-inline double surface_area(const protect::Complex& complex) {
+/// Output vertices per unit area at facet_size 1, measured (see above): expected vertices are
+/// kVertexDensity A / λ².
+inline constexpr double kVertexDensity = 0.66;
+
+/// Expected output vertices for facet_size λ (see above). O(triangles).
+inline double expected_vertices(const protect::Complex& complex, double lambda) {
   double area = 0;
   for (const auto& t : complex.triangles) {
     const Vec3& a = complex.vertices[t[0]];
     area += 0.5 * (complex.vertices[t[1]] - a).cross(complex.vertices[t[2]] - a).norm();
   }
-  return area;
+  return kVertexDensity * area / (lambda * lambda);
 }
 
-/// Expected output vertices for facet_size λ (see above).
-inline double expected_vertices(const protect::Complex& complex, double lambda) {
-  return 0.66 * surface_area(complex) / (lambda * lambda);
-}
-
-/// The sample spacing of the report's distances to the input (refine/approximation_error.h):
-/// λ/2, but no finer than about 8 samples a vertex of the output (at least 1,000 vertices'
-/// worth): a run at λ/2 takes ~6 samples a vertex, so every run that reaches 3/4 of
-/// expected_vertices keeps λ/2 (the libcgal-demo models reach 0.87 to 60 times it at 2%). A run
-/// that --max-vertices stopped far short of its size would otherwise sample the input at a
-/// spacing it never reached: sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9
-/// samples, at 1e-10 it ran out of memory; and each sample is slow against the long slivers of
-/// such a mesh (~50 µs a sample, against ~1 µs on a finished one). hausdorff_spacing reports the
-/// spacing used.
-inline double approximation_spacing(const protect::Complex& complex, double lambda, std::size_t output_vertices) {
+/// The sample spacing of the report's distances to the input (refine/approximation_error.h),
+/// from λ and expected_vertices(): λ/2, but no finer than about 8 samples a vertex of the output
+/// (at least 1,000 vertices' worth). A run at λ/2 takes ~A / (λ/2)² = 4 / kVertexDensity ≈ 6
+/// samples an expected vertex, so every run that reaches 3/4 of its expected count keeps λ/2
+/// (the libcgal-demo models reach 0.87 to 60 times it at 2%). A run that --max-vertices stopped
+/// far short of its size would otherwise sample the input at a spacing it never reached:
+/// sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9 samples, at 1e-10 it ran out of
+/// memory; and each sample is slow against the long slivers of such a mesh (~50 µs a sample,
+/// against ~1 µs on a finished one). hausdorff_spacing reports the spacing used.
+inline double approximation_spacing(double lambda, double expected, std::size_t output_vertices) {
+  const double samples_at_half = 4 / kVertexDensity * expected;
   const double most_samples = 8 * std::max(static_cast<double>(output_vertices), 1000.0);
-  return std::max(lambda / 2, std::sqrt(surface_area(complex) / most_samples));
+  return lambda / 2 * std::max(1.0, std::sqrt(samples_at_half / most_samples));
 }
 
 /// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.5-1.8 KB, see above).
@@ -60,7 +60,7 @@ inline constexpr double kMeshBytesPerVertex = 1.8e3;
 /// a cgroup's memory.max (a container, a CI job). A size the machine held but the limit did not
 /// ran until the allocator failed (fandisk at 0.03% under `ulimit -v 8000000`: 4.5 GB, then out
 /// of memory) instead of being refused up front.
-inline double physical_memory_bytes() {
+inline double usable_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   double bytes = pages > 0 && page > 0 ? double(pages) * double(page) : 16e9;
   rlimit limit{};
@@ -77,7 +77,7 @@ inline double physical_memory_bytes() {
 /// The most vertices a run may reach: what fits in 80% of the memory it may use. Past
 /// that the system would kill the process (or swap for hours) instead of our cap ending it
 /// with a message and the mesh reached.
-inline double vertices_fitting_in_memory() { return 0.8 * physical_memory_bytes() / kMeshBytesPerVertex; }
+inline double vertices_fitting_in_memory() { return 0.8 * usable_memory_bytes() / kMeshBytesPerVertex; }
 
 /// Refused without an explicit --max-vertices: ten million (about 15 GB while meshing), fewer on
 /// a machine whose memory holds fewer.
@@ -136,12 +136,12 @@ inline constexpr double kTriangulationBytesPerPoint = 320;
 /// Bad-input exit when triangulating n points would not fit in 80% of the memory this process may use.
 inline void reject_points_beyond_memory(std::size_t n) {
   const double need = double(n) * kTriangulationBytesPerPoint;
-  if (need <= 0.8 * physical_memory_bytes()) return;
+  if (need <= 0.8 * usable_memory_bytes()) return;
   char message[320];
   std::snprintf(message, sizeof message,
                 "%zu points need about %.3g GB to triangulate, more than the memory this process may use (%.3g GB) allows; "
                 "use fewer points",
-                n, need * 1e-9, physical_memory_bytes() * 1e-9);
+                n, need * 1e-9, usable_memory_bytes() * 1e-9);
   throw Failure{kBadInput, message};
 }
 
