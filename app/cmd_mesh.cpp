@@ -30,6 +30,7 @@
 #include "progress.h"
 #include "size_limits.h"
 #include "size_option.h"
+#include "time_limit.h"
 
 namespace delpsc::app {
 
@@ -48,6 +49,7 @@ struct MeshCommandOptions {
   std::string preview;
   bool check = false;
   bool no_initial_sample = false;
+  double max_seconds = 0;  // 0: no limit
 };
 
 using Clock = std::chrono::steady_clock;
@@ -75,6 +77,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   check_output_path(o.output, "-o");
   if (!o.preview.empty()) check_preview_path(o.preview);
   if (!o.balls_path.empty()) check_output_path(o.balls_path, "--balls");
+  const TimeLimit time_limit(o.max_seconds);
   ProgressLine progress(progress_wanted(g.quiet));
   PhaseTimes phases;
   progress.phase("read");
@@ -96,14 +99,19 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (!o.max_vertices) reject_size_for_vertices(expected, o.size);
 
   phases.emplace_back("features", seconds_since(t0));
+  time_limit.check_before(o.input, "protection");
   progress.phase("protect");
   const auto t_protect = Clock::now();
   // One floor for every ball of the run, Protect's and RefineBall's (protect::options_for_size).
   const protect::ProtectOptions ball_options = protect::options_for_size(lambda, (box.hi - box.lo).norm());
+  protect::ProtectOptions protect_options = ball_options;
+  protect_options.stop = time_limit.poll();
   std::optional<protect::BallSet> ball_set;
   const auto protect_curves = [&] {
     try {
-      ball_set.emplace(protect::protect(domain.complex(), lambda, ball_options));
+      ball_set.emplace(protect::protect(domain.complex(), lambda, protect_options));
+    } catch (const protect::ProtectionStopped& e) {
+      throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() + ": " + e.what() + "; nothing written"};
     } catch (const protect::ProtectionError& e) {
       const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
       throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
@@ -123,6 +131,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   options.facet_angle = o.facet_angle;
   options.initial_sample = !o.no_initial_sample;
   options.max_vertices = o.max_vertices.value_or(automatic_vertex_cap(expected));
+  options.stop = time_limit.poll();
   if (progress.enabled()) options.progress = [&progress](std::size_t vertices) { progress.vertices(vertices); };
   progress.phase("refine");
   std::optional<refine::ProtectedBalls> balls;
@@ -140,6 +149,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
         // floor (initial_sample.h, kBallClearance): once, start again from Protect's balls with
         // the sample a full spacing from them (the retry's time counts as refinement's).
         if (!options.initial_sample || options.sample_ball_clearance >= 1) throw;
+        time_limit.check_before(o.input, "retrying refinement after it reached the balls' floor");
         if (!g.quiet)
           std::fprintf(stderr,
                        "delpsc: refinement reached the balls' floor (%s); retrying with the initial sample a full "
@@ -276,10 +286,13 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.clear();
   report_phases(phases);
   const refine::MesherStats& s = mesher.stats();
-  if (s.stopped_at_max_vertices || s.stuck || failing != 0) {
+  if (s.stopped_at_max_vertices || s.stopped_on_request || s.stuck || failing != 0) {
+    const std::string why =
+        s.stopped_on_request ? time_limit.stopped() + (s.initialised ? "" : ", before the initial points were all inserted and examined")
+        : s.message.empty()  ? "ended with the disk condition failing"
+                             : s.message;
     std::fprintf(stderr, "delpsc: %s: refinement %s; the mesh reached (%zu vertices) is in %s\n", o.input.c_str(),
-                 s.message.empty() ? "ended with the disk condition failing" : s.message.c_str(), mesh.vertices.size(),
-                 o.output.c_str());
+                 why.c_str(), mesh.vertices.size(), o.output.c_str());
     if (s.stopped_at_max_vertices && !o.max_vertices)
       std::fprintf(stderr,
                    "delpsc: %zu vertices is the automatic cap for this model at --size %s (50 times what the size "
@@ -322,6 +335,9 @@ Runner register_mesh(CLI::App& app) {
                  "1.8 KB each; a size needing more than ten million, or more than memory holds, is refused unless "
                  "this is given; 0: no limit)")
       ->check(CLI::Range(0.0, 1e15));  // a negative or overflowing count wrapped to "unlimited"
+  add_max_seconds_option(app, o->max_seconds,
+                         "the mesh reached is still written, as with --max-vertices (empty when the limit comes "
+                         "before refinement has its first triangles)");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
@@ -350,7 +366,7 @@ Runner register_mesh(CLI::App& app) {
       "output's components, Euler characteristic, boundary loops, non-manifold curves and sheets those of the input), "
       "g1 (--check). "
       "--report FILE.json writes them as JSON with phase times, the angle histogram and the per-patch and whole topology.\n"
-      "Exit code 1 when refinement stopped early (--max-vertices), the disk condition fails "
+      "Exit code 1 when refinement stopped early (--max-vertices, --max-seconds), the disk condition fails "
       "somewhere or G1 fails (--check): the mesh reached is written anyway and the failing vertices are listed on stderr.\n\n"
       "Examples:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh\n"
       "  delpsc mesh samples/part.off -o part.mesh --report part.json --preview part.svg\n"

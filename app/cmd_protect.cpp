@@ -14,6 +14,7 @@
 #include "model_input.h"
 #include "size_limits.h"
 #include "size_option.h"
+#include "time_limit.h"
 
 namespace delpsc::app {
 
@@ -27,6 +28,7 @@ struct ProtectCommandOptions {
   std::string balls_path;
   std::string vtu_path;
   bool check = false;
+  double max_seconds = 0;  // 0: no limit
 };
 
 bool ends_with_vtu(const std::string& path) {
@@ -101,6 +103,7 @@ std::string balls_vtu(const protect::BallSet& balls) {
 }
 
 int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
+  const TimeLimit time_limit(o.max_seconds);
   if (!o.vtu_path.empty() && !ends_with_vtu(o.vtu_path))
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
   const io::ReadResult model = load_model(o.input, g);
@@ -112,11 +115,16 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   const double diagonal = protect::BallSet(complex).diagonal();
   const double lambda = parse_size(o.size, diagonal);
   reject_size_for_balls(complex, lambda, protect::ProtectOptions{}.max_balls, o.size);
+  time_limit.check_before(o.input, "protection");
   protect::ProtectStats stats;
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<protect::BallSet> balls;
+  protect::ProtectOptions options = protect::options_for_size(lambda, diagonal);  // as mesh
+  options.stop = time_limit.poll();
   try {
-    balls.emplace(protect::protect(complex, lambda, protect::options_for_size(lambda, diagonal), &stats));  // as mesh
+    balls.emplace(protect::protect(complex, lambda, options, &stats));
+  } catch (const protect::ProtectionStopped& e) {
+    throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() + ": " + e.what() + "; nothing written"};
   } catch (const protect::ProtectionError& e) {
     const std::string defect = input_defect_near(complex, e.where(), lambda);
     throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
@@ -166,9 +174,10 @@ Runner register_protect(CLI::App& app) {
                  "'curve ID START END N' and its N interior balls 'X Y Z R' in order");
   app.add_option("-o,--output", o->vtu_path, "Write the balls as .vtu for ParaView (glyph by radius)");
   app.add_flag("--check", o->check, "Check C1, C2, C3.a, C3.b and coverage; exit 1 if one fails");
+  add_max_seconds_option(app, o->max_seconds, "nothing is written then");
   app.footer(
       "Prints key=value lines: corners, curves, lambda, balls, corner_balls, min_radius, max_radius, "
-      "seconds (protection only), valid (--check).\n\nExample:\n"
+      "seconds (protection only), valid (--check). Exit code 1 when --check fails or --max-seconds stops the run.\n\nExample:\n"
       "  delpsc protect fandisk.off --size 1% --balls fandisk-balls.txt -o fandisk-balls.vtu");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }

@@ -45,7 +45,13 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
   throw ProtectionError(message, where);
 }
 
+void Engine::poll_stop() {
+  if (!options.stop || (++edits_ & 0xfffu) != 0 || !options.stop()) return;
+  throw ProtectionStopped("protection stopped on request with " + std::to_string(balls.size()) + " balls");
+}
+
 BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
+  poll_stop();
   if (!within_caps(radius)) fail_caps(radius, complex.vertices[complex.corner_vertex[corner]], kNoIndex);
   const BallId old = balls.corner_ball(corner);
   const BallId id = balls.set_corner_ball(corner, radius);
@@ -55,6 +61,7 @@ BallId Engine::set_corner_ball(std::uint32_t corner, double radius) {
 }
 
 BallId Engine::insert_interior(std::uint32_t curve, BallId after, double s, double radius) {
+  poll_stop();
   if (!within_caps(radius)) fail_caps(radius, complex.point_at(curve, s), curve);
   const BallId id = balls.insert_interior(curve, after, s, radius);
   created_.push_back(id);

@@ -84,6 +84,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -104,6 +105,13 @@ class ProtectionError : public std::runtime_error {
   Vec3 where_;
 };
 
+/// Thrown when ProtectOptions::stop asked protect() to stop; what() says how many balls it had.
+/// Not a ProtectionError: nothing is wrong with the input, the caller ran out of patience.
+class ProtectionStopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct ProtectOptions {
   std::size_t max_balls = 5'000'000;   ///< live balls
   double min_radius_fraction = 1e-10;  ///< of the bounding-box diagonal
@@ -113,6 +121,11 @@ struct ProtectOptions {
   /// cover of a curve whose smaller vertex ball is below λ/16; false: the paper's α = r_σ/4
   /// throughout the gap, and α = min(r_u, r_v) for every first cover.
   bool graded_cover = true;
+  /// Polled every 4,096 ball edits (never inside one); true makes protect() or refine_ball()
+  /// throw ProtectionStopped, leaving the ball set half built. Empty: never. A caller's time
+  /// limit (`delpsc mesh --max-seconds`); refine::ProtectedBalls drops it, as a RefineBall cut
+  /// short inside the refinement loop would leave the mesher's triangulation without its balls.
+  std::function<bool()> stop;
 };
 
 /// The smallest ball, as a fraction of λ, that a run at size λ may make (protect::protect's

@@ -34,12 +34,15 @@ class Engine {
  private:
   /// Whether a new ball of this radius keeps within the caps; if not, fail_caps says which.
   bool within_caps(double radius) const { return balls.size() < options.max_balls && radius >= min_radius_; }
+  /// Every 4,096 edits, asks options.stop (a clock read, typically) and throws ProtectionStopped.
+  void poll_stop();
   /// Throws the ProtectionError for a ball failing within_caps; `where`, its centre, is named
   /// (where the model needs balls that small), with the nearest other curve than `curve` (the
   /// ball's, kNoIndex for a corner ball) and how far it passes.
   [[noreturn]] void fail_caps(double radius, const Vec3& where, std::uint32_t curve) const;
 
   BallId first_new_id_;
+  std::size_t edits_ = 0;
   double min_radius_;
   std::vector<BallId> created_, removed_;
 };

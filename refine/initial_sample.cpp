@@ -124,7 +124,7 @@ struct SelectionPart {
 std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std::span<const SelectionPart> parts,
                                            std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                            double spacing, double ball_clearance, std::span<const double> local_spacing,
-                                           bool* decided) {
+                                           bool* decided, const std::function<bool()>& stop) {
   std::vector<std::uint32_t> chosen;
   if (decided) std::fill(decided, decided + parts.size(), false);
   const bool local = !local_spacing.empty();
@@ -178,6 +178,10 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
     bool neighbours_found = false;         // ...once a candidate of the cell needs them
     std::uint64_t current = 0;
     for (std::size_t j = 0; j < keyed[k].size(); ++j) {
+      if (stop && (j & 0xffffu) == 0xffffu && stop()) {
+        if (decided) std::fill(decided, decided + parts.size(), false);
+        return chosen;
+      }
       const auto [key, i] = keyed[k][j];
       const Vec3& x = candidates[i];
       if (j == 0 || key != current) {
@@ -220,13 +224,13 @@ std::vector<std::uint32_t> select_separated_points(std::span<const Vec3> candida
                                                    std::span<const Vec3> fixed, double spacing,
                                                    std::span<const double> local_spacing, bool* decided) {
   const SelectionPart whole{0, candidates.size(), 1};
-  return select_in_parts(candidates, {&whole, 1}, balls, fixed, spacing, 1, local_spacing, decided);
+  return select_in_parts(candidates, {&whole, 1}, balls, fixed, spacing, 1, local_spacing, decided, {});
 }
 
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                          double spacing, std::span<const double> local_spacing, bool* net_decided,
-                                         double ball_clearance) {
+                                         double ball_clearance, const std::function<bool()>& stop) {
   if (net_decided) *net_decided = false;
   if (!(ball_clearance > 0 && ball_clearance <= 1)) return {};
   const std::size_t lattice = std::min(parts.lattice, candidates.size());
@@ -236,7 +240,7 @@ std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const
                                            SelectionPart{candidates.size() - net, net, kGapFillSpacing}};
   std::array<bool, 3> decided{};
   std::vector<std::uint32_t> chosen =
-      select_in_parts(candidates, three, balls, fixed, spacing, ball_clearance, local_spacing, decided.data());
+      select_in_parts(candidates, three, balls, fixed, spacing, ball_clearance, local_spacing, decided.data(), stop);
   if (net_decided) *net_decided = net > 0 && decided[2];
   return chosen;
 }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -100,10 +101,13 @@ struct CandidateParts {
 /// every net point was decided - chosen, or refused by a ball or point within its spacing - which
 /// is what sample_cover_power assumes; false without a net. `ball_clearance` in (0, 1] replaces
 /// kBallClearance (1: the balls at the full spacing); outside that range, nothing is chosen.
+/// `stop`, if given, is asked every 65,536 candidates; true ends the selection with what was
+/// chosen so far (net_decided false): a caller's time limit (MesherOptions::stop).
 std::vector<std::uint32_t> select_sample(std::span<const Vec3> candidates, const CandidateParts& parts,
                                          std::span<const WeightedPoint> balls, std::span<const Vec3> fixed,
                                          double spacing, std::span<const double> local_spacing = {},
-                                         bool* net_decided = nullptr, double ball_clearance = kBallClearance);
+                                         bool* net_decided = nullptr, double ball_clearance = kBallClearance,
+                                         const std::function<bool()>& stop = {});
 
 /// A bound on the power distance from any point of the patches to the nearest of the balls, the fixed
 /// points and the points chosen (all of them, or the triangulation's vertices that hide the

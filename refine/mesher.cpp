@@ -75,6 +75,16 @@ void Mesher::seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& s
   }
 }
 
+namespace {
+// MesherOptions::stop answered true inside initialise(): thrown only between two insertions or
+// two examined cells, where the triangulation and the restricted facets are whole.
+struct StopRequested {};
+}  // namespace
+
+void Mesher::stop_if_asked() const {
+  if (options_.stop && options_.stop()) throw StopRequested{};
+}
+
 void Mesher::initialise() {
   const kernel::Box3 box = domain_->bounding_box();
   const Vec3 centre = 0.5 * (box.lo + box.hi);
@@ -114,10 +124,13 @@ void Mesher::initialise() {
     places.push_back(on_patch(seed_patch[i]));
     ++stats_.seeds;
   }
+  stop_if_asked();
   add_initial_sample(keys, points, places);
+  stop_if_asked();
   // The sample makes this phase long on big models: the progress line keeps moving.
   const auto tick = [this] {
     if (options_.progress) options_.progress(domain_vertex_count());
+    stop_if_asked();
   };
   std::vector<PointId> ids;
   // Room for step 2's points too (1-27% more on the CGAL demo models): the per-point arrays of
@@ -143,6 +156,7 @@ void Mesher::initialise() {
   stats_.first_queries = facets_.queries();
   for (PointId p = 0; p < places_.size(); ++p) recheck(p);
   refinements_at_full_check_ = stats_.ball_refinements;
+  stats_.initialised = true;
 }
 
 void Mesher::add_initial_sample(std::span<const BallKey> keys, kernel::LargeVector<WeightedPoint>& points,
@@ -179,7 +193,7 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, kernel::LargeVect
   bool net_decided = false;
   const std::vector<std::uint32_t> chosen =
       select_sample(candidates, parts, balls, fixed, options_.facet_size, local, &net_decided,
-                    options_.sample_ball_clearance);
+                    options_.sample_ball_clearance, options_.stop);
   // --max-vertices bounds the whole run: a sample that would pass it is left out, and the
   // paper's start then refines coarse to fine up to the cap, a coarse mesh of all the model
   // rather than a part of a fine one.
@@ -456,7 +470,13 @@ void Mesher::run() {
       return;
     }
   }
-  initialise();
+  try {
+    initialise();
+  } catch (const StopRequested&) {
+    stats_.stopped_on_request = true;
+    stats_.message = "stopped on request while initialising";
+    return;
+  }
   if (dt_.dimension() < 3) {
     stats_.stuck = true;
     stats_.message = "the triangulation did not reach dimension 3";
@@ -465,6 +485,11 @@ void Mesher::run() {
   for (std::size_t step = 1;; ++step) {
     if (options_.progress && step % std::max<std::size_t>(options_.progress_every, 1) == 0)
       options_.progress(domain_vertex_count());
+    if (step % 64 == 0 && options_.stop && options_.stop()) {
+      stats_.stopped_on_request = true;
+      stats_.message = "stopped on request";
+      return;
+    }
     if (options_.max_vertices > 0 && domain_vertex_count() >= options_.max_vertices) {
       stats_.stopped_at_max_vertices = true;
       stats_.message = "stopped at --max-vertices " + std::to_string(options_.max_vertices);

@@ -146,6 +146,12 @@ struct MesherOptions {
   /// first restricted-facet pass), for a progress line; empty: never.
   std::function<void(std::size_t vertices)> progress;
   std::size_t progress_every = 2000;
+  /// Asked every 64 steps of the loop, between initialisation's phases and at its progress
+  /// points (see progress); true ends run() where it is, with stats().stopped_on_request, and
+  /// output() is the mesh reached: empty while the initial batch was still being inserted,
+  /// without the disk condition's repairs while the first examination had not ended. A caller's
+  /// time limit (`delpsc mesh --max-seconds`); empty: never. Costs one call every 64 steps.
+  std::function<bool()> stop;
 };
 
 struct MesherStats {
@@ -167,6 +173,8 @@ struct MesherStats {
   std::size_t full_sweeps = 0;          ///< closing full re-checks (initialise's first one not
                                         ///< counted; one only after a RefineBall since the last)
   bool stopped_at_max_vertices = false;
+  bool stopped_on_request = false;      ///< MesherOptions::stop said so
+  bool initialised = false;             ///< the initial points all inserted and examined
   bool stuck = false;                   ///< a failure no step could address (see message)
   std::string message;
 };
@@ -197,6 +205,8 @@ class Mesher {
 
  private:
   void initialise();
+  /// Throws (a type private to mesher.cpp, caught by run()) when options_.stop says so.
+  void stop_if_asked() const;
   void seed_points(std::vector<Vec3>& seeds, std::vector<std::uint32_t>& seed_patch) const;
   void add_initial_sample(std::span<const BallKey> keys, kernel::LargeVector<WeightedPoint>& points,
                           kernel::LargeVector<VertexPlace>& places);

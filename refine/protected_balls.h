@@ -15,7 +15,9 @@ class ProtectedBalls final : public BallSource {
  public:
   /// `balls` must outlive this object; it is edited by refine().
   explicit ProtectedBalls(protect::BallSet& balls, const protect::ProtectOptions& options = {})
-      : balls_(&balls), options_(options) {}
+      : balls_(&balls), options_(options) {
+    options_.stop = nullptr;  // see ProtectOptions::stop: a RefineBall is never cut short
+  }
 
   std::vector<BallKey> live_balls() const override { return balls_->live_ids(); }
   ProtectingBall ball(BallKey key) const override {

@@ -241,6 +241,23 @@ if [[ $code -eq 2 ]] && grep -q "is too small for this model" "$TMP/err"; then p
 ( ulimit -v 3000000; "$DELPSC" mesh "$TMP/cube.off" --size 10% -o "$TMP/small.off" ) >"$TMP/out" 2>"$TMP/err" \
   && pass || fail "ulimit -v 3 GB, cube at 10%: $(head -c 300 "$TMP/err")"
 
+# --max-seconds: a limit already passed before protection writes nothing; one that falls in the
+# refinement loop (no initial sample: initialisation takes milliseconds, the whole run seconds)
+# writes the mesh reached, exit 1, as --max-vertices does; one that falls while the initial sample
+# is inserted writes what there is then (the whole run at 0.2% takes ~4 s here, ~0.3 s of it to stop).
+expect 1 "stopped at --max-seconds 1e-09" -- mesh "$TMP/cube.off" --max-seconds 1e-9 -o "$TMP/timed0.off"
+[[ -e "$TMP/timed0.off" ]] && fail "--max-seconds passed before protection, yet $TMP/timed0.off was written"
+grep -q "before protection; nothing written" "$TMP/err" || fail "--max-seconds 1e-9: $(head -c 300 "$TMP/err")"
+expect 1 "refinement stopped at --max-seconds 0.3" -- mesh "$TMP/cube.off" --size 0.3% --no-initial-sample --max-seconds 0.3 -o "$TMP/timed.off"
+read -r nv _ < <(sed -n 2p "$TMP/timed.off")
+[[ "$(value vertices)" -gt 1000 && "$nv" == "$(value vertices)" ]] \
+  || fail "--max-seconds in the loop: vertices=$(value vertices), the file holds $nv"
+grep -q "before the initial points" "$TMP/err" && fail "--max-seconds 0.3, no initial sample: stopped in initialisation"
+expect 1 "before the initial points were all inserted and examined" -- mesh "$TMP/cube.off" --size 0.2% --max-seconds 0.3 -o "$TMP/timed_init.off"
+[[ -e "$TMP/timed_init.off" ]] || fail "--max-seconds during initialisation: no mesh written"
+expect 2 "NaN" -- mesh "$TMP/cube.off" --max-seconds nan -o "$TMP/nan.off"
+expect 2 "" -- mesh "$TMP/cube.off" --max-seconds -1 -o "$TMP/neg.off"
+
 # A run --max-vertices stops far short of its size measures its distances to the input at a
 # spacing its own vertices justify (app/size_limits.h, approximation_spacing): at λ/2 this one
 # sampled ~10^18 points and ran out of memory.

@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <delpsc/io/read_model.h>
 #include <delpsc/io/shapes.h>
+#include <delpsc/protect/protect.h>
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
@@ -131,6 +133,53 @@ TEST_CASE("the sample's clearance from the balls: the full one (delpsc mesh's re
     options.sample_ball_clearance = bad;
     CHECK_THROWS_AS(refine::Mesher(domain, balls, options), std::invalid_argument);
   }
+}
+
+TEST_CASE("a stop request ends Protect and the mesher where they are, and one never granted changes nothing") {
+  refine::PolygonDomain domain(io::make_box_with_fin(4));
+  const double diag = (domain.bounding_box().hi - domain.bounding_box().lo).norm();
+  const double lambda = 0.03 * diag;
+  // Protect asks every 4,096 ball edits: ~20,000 balls at this size.
+  protect::ProtectOptions stopping;
+  stopping.stop = [] { return true; };
+  CHECK_THROWS_AS((void)protect::protect(domain.complex(), 0.0005 * diag, stopping), protect::ProtectionStopped);
+  protect::BallSet set = protect::protect(domain.complex(), lambda);
+
+  const auto mesh_with = [&](std::function<bool()> stop, const refine::Mesher** self = nullptr) {
+    refine::ProtectedBalls balls(set);
+    refine::MesherOptions options;
+    options.facet_size = lambda;
+    options.initial_sample = false;  // a long loop: step 2 does it all
+    options.stop = std::move(stop);
+    refine::Mesher mesher(domain, balls, options);
+    if (self) *self = &mesher;
+    mesher.run();
+    const io::SurfaceMesh mesh = mesher.output();
+    // Whatever the stop, the triangles' vertices lie on the domain (check_skeleton's last part).
+    for (const Vec3& v : mesh.vertices) CHECK(domain.closest_point(v)->squared_distance < 1e-18 * diag * diag);
+    return std::make_pair(mesher.stats(), mesh);
+  };
+  const auto [plain, plain_mesh] = mesh_with({});
+  CHECK_FALSE(plain.stopped_on_request);
+  CHECK(plain.initialised);
+  // Never granted: the same run, asked every 64 steps.
+  std::size_t asked = 0;
+  const auto [never, never_mesh] = mesh_with([&] { return ++asked, false; });
+  CHECK(asked > 0);
+  CHECK_FALSE(never.stopped_on_request);
+  CHECK(never_mesh.vertices == plain_mesh.vertices);
+  CHECK(never_mesh.triangles == plain_mesh.triangles);
+  // Granted at once: before anything is inserted, an empty mesh.
+  const auto [first, first_mesh] = mesh_with([] { return true; });
+  CHECK(first.stopped_on_request);
+  CHECK_FALSE(first.initialised);
+  CHECK(first_mesh.triangles.empty());
+  // Granted in the loop, once initialised: the mesh reached, smaller than the whole run's.
+  const refine::Mesher* self = nullptr;
+  const auto [loop, loop_mesh] = mesh_with([&] { return self->stats().initialised; }, &self);
+  CHECK(loop.stopped_on_request);
+  CHECK(loop.initialised);
+  CHECK(loop_mesh.vertices.size() < plain_mesh.vertices.size());
 }
 
 TEST_CASE("open square sheet") { mesh_model(io::make_square_sheet(4), 0.04); }
