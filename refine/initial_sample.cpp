@@ -178,7 +178,7 @@ std::vector<std::uint32_t> select_in_parts(std::span<const Vec3> candidates, std
     bool neighbours_found = false;         // ...once a candidate of the cell needs them
     std::uint64_t current = 0;
     for (std::size_t j = 0; j < keyed[k].size(); ++j) {
-      if (stop && (j & 0xffffu) == 0xffffu && stop()) {
+      if ((j & 0xffffu) == 0xffffu && stop && stop()) {
         if (decided) std::fill(decided, decided + parts.size(), false);
         return chosen;
       }
