@@ -216,6 +216,12 @@ grep -q "times what --size 4% needs on this model's area" "$TMP/err" || fail "we
 grep -q "the input folds back on itself there: its two triangles on the edge from (0, 0, 0) to (0, 0, 0.5) are 2 degrees apart" \
   "$TMP/err" || fail "wedge: the fold is not named: $(head -c 400 "$TMP/err")"
 (( $(value vertices) > 8 * $(value vertices_expected) )) || fail "wedge: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
+# A slab 0.01 thick (a quarter of λ): its two big faces need vertices at the thickness's scale
+# all over (~36 times the count), no fold or narrow corner anywhere: the warning's other wording.
+printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 0.01\n1 0 0.01\n0 1 0.01\n1 1 0.01\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n' >"$TMP/slab.off"
+expect 0 "the rest elsewhere: no fold or narrow corner there: parts of the model thinner than" \
+  -- mesh "$TMP/slab.off" --size 4% -o "$TMP/slab.mesh" --check
+[[ "$(value g1)" == "true" && "$(value disk_condition)" == "ok" ]] || fail "slab: g1=$(value g1) disk_condition=$(value disk_condition)"
 expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/plain.off"
 grep -q "warning:" "$TMP/err" && fail "cube 5%: warned: $(head -c 300 "$TMP/err")"
 (( $(value vertices) <= 2 * $(value vertices_expected) )) || fail "cube 5%: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
