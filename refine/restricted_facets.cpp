@@ -362,14 +362,20 @@ void RestrictedFacets::rebuild(kernel::LargeVector<PointId>& touched, const std:
   records_.reserve(2 * point_room);
   flat_.assign(cells, kFlatUnknown);
   facet_refs_.assign(4 * cells, {});
-  for (CellId c = 0; c < dt_->cell_capacity(); ++c) {
+  // Which cells are live and finite, in one sequential pass: asking the neighbour itself below
+  // was a cache miss per facet (cell ids follow the free list, scattered in space), three
+  // quarters of this loop's own time on the cube at 1.87%, for facets the cover then skips
+  // without reading that cell.
+  kernel::LargeVector<std::uint8_t> finite(cells);
+  for (CellId c = 0; c < cells; ++c) finite[c] = dt_->is_cell_alive(c) && !dt_->is_infinite(c);
+  for (CellId c = 0; c < cells; ++c) {
     // Each finite facet once: from its finite cell of smaller id (a hull facet from its only
     // finite cell); facets through the infinite vertex have no dual edge.
     if (tick && (c & 0xffff) == 0xffff) tick();
-    if (!dt_->is_cell_alive(c) || dt_->is_infinite(c)) continue;
+    if (!finite[c]) continue;
     for (int i = 0; i < 4; ++i) {
       const CellId other = dt_->neighbour(c, i);
-      if (!dt_->is_infinite(other) && other < c) continue;
+      if (other < c && finite[other]) continue;
       examine(Facet{c, i}, cover_power);
     }
   }
