@@ -219,6 +219,13 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("seconds_refine", seconds_refine);
   report("seconds", seconds);
   report("disk_condition", failing == 0 ? std::string("ok") : std::to_string(failing));
+  {
+    const refine::MesherStats& s = mesher.stats();
+    report("stopped", std::string(s.stopped_on_request        ? "max-seconds"
+                                  : s.stopped_at_max_vertices ? "max-vertices"
+                                  : s.stuck                   ? "stuck"
+                                                              : "no"));
+  }
   report("min_angle", refine::min_triangle_angle_degrees(mesh));
   report("hausdorff", approximation.relative(approximation.hausdorff()));
   report("hausdorff_out_in", approximation.relative(approximation.output_to_input.distance));
@@ -356,7 +363,8 @@ Runner register_mesh(CLI::App& app) {
       "lambda, balls, "
       "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
-      "disk_condition (ok, or the number of vertices where it fails), min_angle, max_angle (degrees), "
+      "disk_condition (ok, or the number of vertices where it fails), stopped (no; max-vertices or max-seconds when "
+      "a cap ended refinement; stuck when a failure had no step to address it), min_angle, max_angle (degrees), "
       "hausdorff, hausdorff_out_in, hausdorff_in_out (the sampled distance between output and input surfaces, both ways "
       "and each way), feature_distance (the same between each input curve and the output's edges of that curve), "
       "hausdorff_spacing (the sample spacing, λ/2: each figure is at most that below the true one; all five relative "

@@ -49,7 +49,7 @@ awk '/^Corners/ { getline; c = $1 } /^Triangles/ { getline; n = $1; for (i = 0; 
 expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/fine.vtu" --check
 [[ "$(value g1)" == "true" ]] || fail "5%: g1=$(value g1)"
 [[ "$(value vertices)" -gt "$v" ]] || fail "5% gave $(value vertices) vertices, 10% gave $v"
-[[ "$(value disk_condition)" == "ok" ]] || fail "5%: disk_condition=$(value disk_condition)"
+[[ "$(value disk_condition)" == "ok" && "$(value stopped)" == "no" ]] || fail "5%: disk_condition=$(value disk_condition) stopped=$(value stopped)"
 
 # The vertex cap: exit 1, a message, the failing vertices listed, the mesh reached written (a cap
 # above the 125 balls at 5%: below them the run stops before refining, tested further down).
@@ -66,6 +66,7 @@ expect 0 "" -- mesh "$TMP/cube.off" --size 5% --no-initial-sample --check -o "$T
 # is left out and the run stops at the cap, not past it.
 expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 2% --max-vertices 1000 -o "$TMP/capped.off"
 [[ "$(value vertices)" -le 1000 && "$(value vertices)" -gt 450 ]] || fail "--max-vertices 1000 gave $(value vertices) vertices"
+[[ "$(value stopped)" == "max-vertices" ]] || fail "--max-vertices 1000: stopped=$(value stopped)"
 
 # CGAL-style criteria: facet_distance and facet_angle refine further than the size alone.
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% --facet-distance 0.1% --facet-angle 30 -o "$TMP/criteria.off" -v
@@ -256,8 +257,8 @@ expect 1 "stopped at --max-seconds 1e-09" -- mesh "$TMP/cube.off" --max-seconds 
 grep -q "before protection; nothing written" "$TMP/err" || fail "--max-seconds 1e-9: $(head -c 300 "$TMP/err")"
 expect 1 "refinement stopped at --max-seconds 0.3" -- mesh "$TMP/cube.off" --size 0.3% --no-initial-sample --max-seconds 0.3 -o "$TMP/timed.off"
 read -r nv _ < <(sed -n 2p "$TMP/timed.off")
-[[ "$(value vertices)" -gt 1000 && "$nv" == "$(value vertices)" ]] \
-  || fail "--max-seconds in the loop: vertices=$(value vertices), the file holds $nv"
+[[ "$(value vertices)" -gt 1000 && "$nv" == "$(value vertices)" && "$(value stopped)" == "max-seconds" ]] \
+  || fail "--max-seconds in the loop: vertices=$(value vertices), the file holds $nv, stopped=$(value stopped)"
 grep -q "before the initial points" "$TMP/err" && fail "--max-seconds 0.3, no initial sample: stopped in initialisation"
 expect 1 "before the initial points were all inserted and examined" -- mesh "$TMP/cube.off" --size 0.2% --max-seconds 0.3 -o "$TMP/timed_init.off"
 [[ -e "$TMP/timed_init.off" ]] || fail "--max-seconds during initialisation: no mesh written"
