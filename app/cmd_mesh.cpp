@@ -343,8 +343,8 @@ Runner register_mesh(CLI::App& app) {
                  "this is given; 0: no limit)")
       ->check(CLI::Range(0.0, 1e15));  // a negative or overflowing count wrapped to "unlimited"
   add_max_seconds_option(app, o->max_seconds,
-                         "the mesh reached is still written, as with --max-vertices (empty when the limit comes "
-                         "before refinement has its first triangles)");
+                         "the mesh reached is still written, as with --max-vertices (nothing when the limit comes "
+                         "before Protect has ended; an empty mesh while the initial points are being inserted)");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
