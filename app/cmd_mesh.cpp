@@ -44,6 +44,7 @@ struct MeshCommandOptions {
   double corner_angle = 60;
   std::optional<std::size_t> max_vertices;  // unset: automatic_vertex_cap; 0: no limit
   std::string facet_distance;  // empty: off
+  std::string edge_size;       // empty: the size
   double facet_angle = 0;
   std::string balls_path;
   std::string preview;
@@ -94,8 +95,14 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   reject_pinched_patches(domain.complex(), o.input);
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());
-  reject_size_for_balls(domain.complex(), lambda, protect::ProtectOptions{}.max_balls, o.size);
-  const double expected = expected_vertices(domain.complex(), lambda);
+  // CGAL's edge_size: the largest protecting ball radius, λ unless given (Protect(D, λ) of the
+  // paper uses one λ for both; the balls need only be at most the facets' size for step 2, and
+  // smaller ones just cost vertices along the curves).
+  const double edge_size = o.edge_size.empty() ? lambda : parse_size(o.edge_size, (box.hi - box.lo).norm(), "--edge-size");
+  const std::string& edge_text = o.edge_size.empty() ? o.size : o.edge_size;
+  reject_size_for_balls(domain.complex(), edge_size, protect::ProtectOptions{}.max_balls, edge_text,
+                        o.edge_size.empty() ? "--size" : "--edge-size");
+  const double expected = expected_vertices(domain.complex(), lambda, edge_size);
   if (!o.max_vertices) reject_size_for_vertices(expected, o.size);
 
   phases.emplace_back("features", seconds_since(t0));
@@ -103,13 +110,13 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("protect");
   const auto t_protect = Clock::now();
   // One floor for every ball of the run, Protect's and RefineBall's (protect::options_for_size).
-  const protect::ProtectOptions ball_options = protect::options_for_size(lambda, (box.hi - box.lo).norm());
+  const protect::ProtectOptions ball_options = protect::options_for_size(edge_size, (box.hi - box.lo).norm());
   protect::ProtectOptions protect_options = ball_options;
   protect_options.stop = time_limit.poll();
   std::optional<protect::BallSet> ball_set;
   const auto protect_curves = [&] {
     try {
-      ball_set.emplace(protect::protect(domain.complex(), lambda, protect_options));
+      ball_set.emplace(protect::protect(domain.complex(), edge_size, protect_options));
     } catch (const protect::ProtectionStopped& e) {
       throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() + ": " + e.what() + "; nothing written"};
     } catch (const protect::ProtectionError& e) {
@@ -211,6 +218,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("curves", std::size_t{domain.curve_count()});
   report("corners", std::size_t{domain.corner_count()});
   report("lambda", lambda);
+  report("edge_size", edge_size);
   report("balls", ball_set->size());
   report("ball_refinements", mesher.stats().ball_refinements);
   report("initial_sample", mesher.stats().sampled);
@@ -321,8 +329,11 @@ Runner register_mesh(CLI::App& app) {
                  "The mesh: .mesh (Medit, patch and curve labels), .vtu (ParaView), .off, .obj, .ply or .stl")
       ->required();
   app.add_option("--size", o->size,
-                 "λ: the largest ball radius and restricted-facet size, a length or a percentage of the "
-                 "bounding-box diagonal (default 2%)");
+                 "λ: the largest restricted-facet size (CGAL's facet_size) and, unless --edge-size is given, the "
+                 "largest protecting ball radius; a length or a percentage of the bounding-box diagonal (default 2%)");
+  app.add_option("--edge-size", o->edge_size,
+                 "The largest protecting ball radius along the feature curves (CGAL's edge_size), a length or a "
+                 "percentage of the diagonal (default: --size); smaller gives finer curves, larger coarser ones");
   app.add_option("--angle", o->angle,
                  "Feature angle in degrees: an edge whose face normals differ by more is sharp")
       ->check(range_not_nan(0.0, 180.0));
@@ -360,7 +371,7 @@ Runner register_mesh(CLI::App& app) {
       "Prints key=value lines: vertices, triangles, vertices_expected (what the size alone needs on the model's area; "
       "a run above 8 times it warns, unless -q, where its vertices crowd and what the input has there), patches, "
       "curves, corners, "
-      "lambda, balls, "
+      "lambda, edge_size, balls, "
       "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
       "disk_condition (ok, or the number of vertices where it fails), stopped (no; max-vertices or max-seconds when "

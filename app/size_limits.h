@@ -26,15 +26,25 @@ namespace delpsc::app {
 /// Output vertices per unit area at facet_size 1, measured (see above): expected vertices are
 /// kVertexDensity A / λ².
 inline constexpr double kVertexDensity = 0.66;
+/// Protecting balls per unit of curve length at edge size 1: Protect's balls at radius λ number
+/// about 1.3 length / λ (the unit cube: 450 at λ = 0.0346, 1,745 at 0.00866).
+inline constexpr double kBallsPerLength = 1.3;
 
-/// Expected output vertices for facet_size λ (see above). O(triangles).
-inline double expected_vertices(const protect::Complex& complex, double lambda) {
+/// Expected output vertices for facet_size λ (see above), plus the extra protecting balls of an
+/// edge size (the largest ball radius) below λ. O(triangles + curves).
+inline double expected_vertices(const protect::Complex& complex, double lambda, double edge_size) {
   double area = 0;
   for (const auto& t : complex.triangles) {
     const Vec3& a = complex.vertices[t[0]];
     area += 0.5 * (complex.vertices[t[1]] - a).cross(complex.vertices[t[2]] - a).norm();
   }
-  return kVertexDensity * area / (lambda * lambda);
+  double extra_balls = 0;  // an --edge-size below λ: the balls beyond those λ itself makes
+  if (edge_size < lambda) {
+    double length = 0;
+    for (const protect::Curve& c : complex.curves) length += c.length;
+    extra_balls = kBallsPerLength * length * (1 / edge_size - 1 / lambda);
+  }
+  return kVertexDensity * area / (lambda * lambda) + extra_balls;
 }
 
 /// The sample spacing of the report's distances to the input (refine/approximation_error.h),
@@ -93,16 +103,16 @@ inline std::size_t automatic_vertex_cap(double expected) {
 
 /// Bad-input exit when the curves alone need more than `max_balls` balls at λ.
 inline void reject_size_for_balls(const protect::Complex& complex, double lambda, std::size_t max_balls,
-                                  const std::string& size_text) {
+                                  const std::string& size_text, const char* option = "--size") {
   double length = 0;
   for (const protect::Curve& c : complex.curves) length += c.length;
   const double least = length / (2 * lambda);
   if (least <= static_cast<double>(max_balls)) return;
   char message[320];
   std::snprintf(message, sizeof message,
-                "--size %s is too small for this model: its feature curves (%.6g long in all) need at least %.3g "
+                "%s %s is too small for this model: its feature curves (%.6g long in all) need at least %.3g "
                 "protecting balls, more than the cap of %zu; choose a larger size",
-                size_text.c_str(), length, least, max_balls);
+                option, size_text.c_str(), length, least, max_balls);
   throw Failure{kBadInput, message};
 }
 

@@ -51,6 +51,25 @@ expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/fine.vtu" --check
 [[ "$(value vertices)" -gt "$v" ]] || fail "5% gave $(value vertices) vertices, 10% gave $v"
 [[ "$(value disk_condition)" == "ok" && "$(value stopped)" == "no" ]] || fail "5%: disk_condition=$(value disk_condition) stopped=$(value stopped)"
 
+# --edge-size (CGAL's edge_size): the largest protecting ball radius, apart from --size. Finer
+# curves on the cube at 10%: over five times the balls, none larger than the edge size; coarser
+# ones at 5%: fewer balls than the size alone makes. G1 and the disk condition hold either way.
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/plain10.off"
+plain10_balls=$(value balls)
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% --edge-size 2% -o "$TMP/edges.mesh" --check --balls "$TMP/edge_balls.txt"
+[[ "$(value g1)" == "true" && "$(value disk_condition)" == "ok" ]] || fail "--edge-size 2%: g1=$(value g1) disk_condition=$(value disk_condition)"
+awk -v e="$(value edge_size)" 'BEGIN { exit !(e > 0.03464 && e < 0.03465) }' || fail "--edge-size 2%: edge_size=$(value edge_size)"
+(( $(value balls) > 5 * plain10_balls )) || fail "--edge-size 2% at --size 10%: $(value balls) balls, $plain10_balls without"
+awk -v e="$(value edge_size)" '$1 == "corner" { r = $6 } NF == 4 { r = $4 } r > e { bad = 1 } END { exit bad }' "$TMP/edge_balls.txt" \
+  || fail "--edge-size 2%: a ball larger than the edge size"
+expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/plain5.off"
+plain5_balls=$(value balls)
+expect 0 "" -- mesh "$TMP/cube.off" --size 5% --edge-size 30% -o "$TMP/coarse_edges.off" --check
+[[ "$(value g1)" == "true" && "$(value balls)" -lt "$plain5_balls" ]] \
+  || fail "--edge-size 30%: g1=$(value g1) balls=$(value balls), $plain5_balls at --size 5% alone"
+expect 2 "--edge-size 1e-7% is too small for this model" -- mesh "$TMP/cube.off" --edge-size 1e-7% -o "$TMP/x.off"
+expect 2 "--edge-size" -- mesh "$TMP/cube.off" --edge-size -1 -o "$TMP/x.off"
+
 # The vertex cap: exit 1, a message, the failing vertices listed, the mesh reached written (a cap
 # above the 125 balls at 5%: below them the run stops before refining, tested further down).
 expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 5% --max-vertices 150 -o "$TMP/capped.off"

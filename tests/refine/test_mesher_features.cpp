@@ -37,6 +37,7 @@ struct Run {
   bool check_patch_topology = true;
   bool initial_sample = true;  // false: step 2 starts from the balls and seeds alone, as the paper's
   double sample_ball_clearance = refine::kBallClearance;
+  double edge_fraction = 0;  // CGAL's edge_size, the largest ball radius, of the diagonal; 0: the size
 };
 
 Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run = {}) {
@@ -44,7 +45,8 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run =
   const kernel::Box3 box = domain.bounding_box();
   const double diag = (box.hi - box.lo).norm();
   const double lambda = size_fraction * diag;
-  protect::BallSet set = protect::protect(domain.complex(), lambda);
+  const double edge_size = run.edge_fraction > 0 ? run.edge_fraction * diag : lambda;
+  protect::BallSet set = protect::protect(domain.complex(), edge_size);
   refine::ProtectedBalls balls(set);
   refine::MesherOptions options;
   options.facet_size = lambda;
@@ -180,6 +182,18 @@ TEST_CASE("a stop request ends Protect and the mesher where they are, and one ne
   CHECK(loop.stopped_on_request);
   CHECK(loop.initialised);
   CHECK(loop_mesh.vertices.size() < plain_mesh.vertices.size());
+}
+
+TEST_CASE("balls smaller or larger than the facets' size (CGAL's edge_size apart from facet_size)") {
+  // Protect(D, λ) of the paper uses one λ; step 2 needs only balls, whatever their size, that
+  // meet C1-C3 (run_mesher_and_check checks them and everything else).
+  const Outcome same = mesh_model(io::make_box_with_fin(4), 0.04);
+  const Outcome fine = mesh_model(io::make_box_with_fin(4), 0.04, {.edge_fraction = 0.01});
+  const Outcome coarse = mesh_model(io::make_box_with_fin(4), 0.04, {.edge_fraction = 0.12});
+  CHECK(fine.report.ok());
+  CHECK(coarse.report.ok());
+  CHECK(fine.vertices > same.vertices);
+  CHECK(coarse.vertices < same.vertices);
 }
 
 TEST_CASE("open square sheet") { mesh_model(io::make_square_sheet(4), 0.04); }
