@@ -100,6 +100,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   // smaller ones just cost vertices along the curves).
   const double edge_size = o.edge_size.empty() ? lambda : parse_size(o.edge_size, (box.hi - box.lo).norm(), "--edge-size");
   const std::string& edge_text = o.edge_size.empty() ? o.size : o.edge_size;
+  reject_edge_size(edge_size, lambda, edge_text, o.size);
   reject_size_for_balls(domain.complex(), edge_size, protect::ProtectOptions{}.max_balls, edge_text,
                         o.edge_size.empty() ? "--size" : "--edge-size");
   const double expected = expected_vertices(domain.complex(), lambda, edge_size);
@@ -333,7 +334,8 @@ Runner register_mesh(CLI::App& app) {
                  "largest protecting ball radius; a length or a percentage of the bounding-box diagonal (default 2%)");
   app.add_option("--edge-size", o->edge_size,
                  "The largest protecting ball radius along the feature curves (CGAL's edge_size), a length or a "
-                 "percentage of the diagonal (default: --size); smaller gives finer curves, larger coarser ones");
+                 "percentage of the diagonal (default: --size), at least 1/64 of it; smaller gives finer curves, "
+                 "larger coarser ones");
   app.add_option("--angle", o->angle,
                  "Feature angle in degrees: an edge whose face normals differ by more is sharp")
       ->check(range_not_nan(0.0, 180.0));

@@ -67,7 +67,8 @@ plain5_balls=$(value balls)
 expect 0 "" -- mesh "$TMP/cube.off" --size 5% --edge-size 30% -o "$TMP/coarse_edges.off" --check
 [[ "$(value g1)" == "true" && "$(value balls)" -lt "$plain5_balls" ]] \
   || fail "--edge-size 30%: g1=$(value g1) balls=$(value balls), $plain5_balls at --size 5% alone"
-expect 2 "--edge-size 1e-7% is too small for this model" -- mesh "$TMP/cube.off" --edge-size 1e-7% -o "$TMP/x.off"
+expect 2 "--edge-size 1e-7% is too small for this model" -- mesh "$TMP/cube.off" --size 1e-6% --edge-size 1e-7% -o "$TMP/x.off"
+expect 2 "--edge-size 0.03% is below 1/64 of --size 2%" -- mesh "$TMP/cube.off" --edge-size 0.03% -o "$TMP/x.off"
 expect 2 "--edge-size" -- mesh "$TMP/cube.off" --edge-size -1 -o "$TMP/x.off"
 
 # The vertex cap: exit 1, a message, the failing vertices listed, the mesh reached written (a cap
