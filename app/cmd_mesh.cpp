@@ -121,7 +121,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     } catch (const protect::ProtectionStopped& e) {
       throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() + ": " + e.what() + "; nothing written"};
     } catch (const protect::ProtectionError& e) {
-      const std::string defect = input_defect_near(domain.complex(), e.where(), lambda);
+      const std::string defect = input_defect_near(domain.complex(), e.where(), edge_size);
       throw Failure{kBadInput, o.input + ": " + e.what() + (defect.empty() ? "" : "; " + defect)};
     }
   };
@@ -205,7 +205,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("approximation", mesh.vertices.size());
   const auto t_approximation = Clock::now();
   refine::ApproximationOptions approximation_options;
-  approximation_options.sample_spacing = approximation_spacing(lambda, expected, mesh.vertices.size());
+  approximation_options.sample_spacing = approximation_spacing(lambda, expected, mesh.vertices.size(),
+                                                               mesher.stats().stopped_on_request ? 1 : 8);
   const refine::ApproximationError approximation = refine::measure_approximation(mesh, domain, approximation_options);
   const double seconds_approximation = seconds_since(t_approximation);
   phases.emplace_back("approximation", seconds_approximation);
@@ -222,12 +223,16 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   report("edge_size", edge_size);
   report("balls", ball_set->size());
   report("ball_refinements", mesher.stats().ball_refinements);
-  report("initial_sample", mesher.stats().sampled);
+  // Points of a selection a stop cut short were never all inserted: none counts.
+  report("initial_sample", mesher.stats().initialised ? mesher.stats().sampled : 0);
   report("sample_ball_clearance", options.sample_ball_clearance);
   report("seconds_protect", seconds_protect);
   report("seconds_refine", seconds_refine);
   report("seconds", seconds);
-  report("disk_condition", failing == 0 ? std::string("ok") : std::to_string(failing));
+  // Before the initial points are all examined nothing is known of it (an empty mesh).
+  report("disk_condition", !mesher.stats().initialised ? std::string("unchecked")
+                           : failing == 0               ? std::string("ok")
+                                                        : std::to_string(failing));
   {
     const refine::MesherStats& s = mesher.stats();
     report("stopped", std::string(s.stopped_on_request        ? "max-seconds"
@@ -357,7 +362,8 @@ Runner register_mesh(CLI::App& app) {
       ->check(CLI::Range(0.0, 1e15));  // a negative or overflowing count wrapped to "unlimited"
   add_max_seconds_option(app, o->max_seconds,
                          "the mesh reached is still written, as with --max-vertices (nothing when the limit comes "
-                         "before Protect has ended; an empty mesh while the initial points are being inserted)");
+                         "before Protect has ended; an empty mesh until the initial points are all inserted and "
+                         "examined); the checks and the report after the stop take time in proportion to that mesh");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
@@ -376,7 +382,8 @@ Runner register_mesh(CLI::App& app) {
       "lambda, edge_size, balls, "
       "ball_refinements, initial_sample (the points refinement started from besides the balls; 0 with "
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
-      "disk_condition (ok, or the number of vertices where it fails), stopped (no; max-vertices or max-seconds when "
+      "disk_condition (ok, or the number of vertices where it fails; unchecked when a cap stopped the run "
+      "before its first mesh), stopped (no; max-vertices or max-seconds when "
       "a cap ended refinement; stuck when a failure had no step to address it), min_angle, max_angle (degrees), "
       "hausdorff, hausdorff_out_in, hausdorff_in_out (the sampled distance between output and input surfaces, both ways "
       "and each way), feature_distance (the same between each input curve and the output's edges of that curve), "

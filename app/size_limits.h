@@ -55,10 +55,12 @@ inline double expected_vertices(const protect::Complex& complex, double lambda, 
 /// far short of its size would otherwise sample the input at a spacing it never reached:
 /// sphere.off at --size 0.01% with --max-vertices 50 ran ~10^9 samples, at 1e-10 it ran out of
 /// memory; and each sample is slow against the long slivers of such a mesh (~50 µs a sample,
-/// against ~1 µs on a finished one). hausdorff_spacing reports the spacing used.
-inline double approximation_spacing(double lambda, double expected, std::size_t output_vertices) {
+/// against ~1 µs on a finished one). hausdorff_spacing reports the spacing used. A run
+/// --max-seconds stopped passes 1 sample a vertex: the limit was about time.
+inline double approximation_spacing(double lambda, double expected, std::size_t output_vertices,
+                                    double samples_per_vertex = 8) {
   const double samples_at_half = 4 / kVertexDensity * expected;
-  const double most_samples = 8 * std::max(static_cast<double>(output_vertices), 1000.0);
+  const double most_samples = samples_per_vertex * std::max(static_cast<double>(output_vertices), 1000.0);
   return lambda / 2 * std::max(1.0, std::sqrt(samples_at_half / most_samples));
 }
 

@@ -46,7 +46,7 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
 }
 
 void Engine::poll_stop() {
-  if (!options.stop || (++edits_ & 0xfffu) != 0 || !options.stop()) return;
+  if (!options.stop || (++work_ & 0xfffu) != 0 || !options.stop()) return;
   throw ProtectionStopped("protection stopped on request with " + std::to_string(balls.size()) + " balls");
 }
 
@@ -167,8 +167,10 @@ BallSet protect(const Complex& complex, double lambda, const ProtectOptions& opt
   std::vector<BallId> too_big;
   while (balls.largest() != kNoBall && balls[balls.largest()].radius > lambda) {
     too_big.clear();
-    for (const BallId id : balls.live_ids())
+    for (const BallId id : balls.live_ids()) {
+      engine.poll_stop();
       if (balls[id].radius > lambda) too_big.push_back(id);
+    }
     detail::refine_balls(engine, too_big);
   }
 

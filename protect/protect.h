@@ -121,7 +121,8 @@ struct ProtectOptions {
   /// cover of a curve whose smaller vertex ball is below λ/16; false: the paper's α = r_σ/4
   /// throughout the gap, and α = min(r_u, r_v) for every first cover.
   bool graded_cover = true;
-  /// Polled every 4,096 ball edits (never inside one); true makes protect() or refine_ball()
+  /// Polled every 4,096 units of work - ball edits, and balls scanned by Separate and by the
+  /// refinement of balls above λ - never inside an edit; true makes protect() or refine_ball()
   /// throw ProtectionStopped, leaving the ball set half built. Empty: never. A caller's time
   /// limit (`delpsc mesh --max-seconds`); refine::ProtectedBalls drops it, as a RefineBall cut
   /// short inside the refinement loop would leave the mesher's triangulation without its balls.

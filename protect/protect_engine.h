@@ -25,6 +25,9 @@ class Engine {
   BallId set_corner_ball(std::uint32_t corner, double radius);
   BallId insert_interior(std::uint32_t curve, BallId after, double s, double radius);
   void remove_interior(BallId id);
+  /// Counts a unit of work (a ball edit, a ball scanned by Separate or step 3) and every 4,096
+  /// of them asks options.stop (a clock read, typically); throws ProtectionStopped.
+  void poll_stop();
 
   /// Ids created since the engine started, in order (some may be dead again).
   const std::vector<BallId>& created() const { return created_; }
@@ -34,15 +37,14 @@ class Engine {
  private:
   /// Whether a new ball of this radius keeps within the caps; if not, fail_caps says which.
   bool within_caps(double radius) const { return balls.size() < options.max_balls && radius >= min_radius_; }
-  /// Every 4,096 edits, asks options.stop (a clock read, typically) and throws ProtectionStopped.
-  void poll_stop();
+
   /// Throws the ProtectionError for a ball failing within_caps; `where`, its centre, is named
   /// (where the model needs balls that small), with the nearest other curve than `curve` (the
   /// ball's, kNoIndex for a corner ball) and how far it passes.
   [[noreturn]] void fail_caps(double radius, const Vec3& where, std::uint32_t curve) const;
 
   BallId first_new_id_;
-  std::size_t edits_ = 0;
+  std::size_t work_ = 0;
   double min_radius_;
   std::vector<BallId> created_, removed_;
 };

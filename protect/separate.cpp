@@ -43,6 +43,7 @@ void separate(Engine& engine, std::vector<BallId> candidates) {
   while (!candidates.empty()) {
     to_refine.clear();
     for (const BallId id : candidates) {
+      engine.poll_stop();  // a round scans every candidate: seconds at millions of balls
       if (!balls.alive(id)) continue;
       near.clear();
       balls.balls_meeting(balls[id].centre, balls[id].radius, near);

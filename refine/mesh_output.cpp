@@ -12,6 +12,9 @@ namespace delpsc::refine {
 
 io::SurfaceMesh Mesher::output() const {
   io::SurfaceMesh mesh;
+  // Stopped before the first examination ended (MesherOptions::stop): the facets examined so
+  // far are a scattered part of the surface, by cell id, and no mesh of anything.
+  if (!stats_.initialised) return mesh;
   constexpr std::uint32_t kUnset = 0xffffffffu;
   kernel::LargeVector<std::uint32_t> index(dt_.number_of_points(), kUnset);  // by PointId
   auto vertex = [&](PointId p) {

@@ -574,6 +574,7 @@ bool Mesher::sweep_failures() {
 
 std::vector<std::pair<PointId, DiskVerdict>> Mesher::failing_vertices() const {
   std::vector<std::pair<PointId, DiskVerdict>> out;
+  if (!stats_.initialised) return out;  // the restricted facets are not all known
   for (PointId p = 0; p < places_.size(); ++p) {
     if (places_[p].kind == VertexPlace::Kind::outside) continue;
     const PointStatus s = dt_.status(p);

@@ -148,9 +148,10 @@ struct MesherOptions {
   std::size_t progress_every = 2000;
   /// Asked every 64 steps of the loop, between initialisation's phases and at its progress
   /// points (see progress); true ends run() where it is, with stats().stopped_on_request, and
-  /// output() is the mesh reached: empty while the initial batch was still being inserted,
-  /// without the disk condition's repairs while the first examination had not ended. A caller's
-  /// time limit (`delpsc mesh --max-seconds`); empty: never. Costs one call every 64 steps.
+  /// output() is the mesh reached: empty until the initial points are all inserted and examined
+  /// (stats().initialised), then the restricted triangles of the moment, where the disk
+  /// condition may still fail. A caller's time limit (`delpsc mesh --max-seconds`); empty:
+  /// never. Costs one call every 64 steps.
   std::function<bool()> stop;
 };
 
@@ -195,7 +196,8 @@ class Mesher {
 
   /// Vertices of the domain (balls and surface points) that are vertices of the triangulation.
   std::size_t domain_vertex_count() const;
-  /// Vertices failing the disk condition now, with the first failure of each.
+  /// Vertices failing the disk condition now, with the first failure of each (none before the
+  /// initial points are all examined: stats().initialised false).
   std::vector<std::pair<PointId, DiskVerdict>> failing_vertices() const;
 
   const MesherStats& stats() const { return stats_; }

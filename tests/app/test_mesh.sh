@@ -270,8 +270,8 @@ if [[ $code -eq 2 ]] && grep -q "is too small for this model" "$TMP/err"; then p
 
 # --max-seconds: a limit already passed before protection writes nothing; one that falls in the
 # refinement loop (no initial sample: initialisation takes milliseconds, the whole run seconds)
-# writes the mesh reached, exit 1, as --max-vertices does; one that falls while the initial sample
-# is inserted writes what there is then (the whole run at 0.2% takes ~4 s here, ~0.3 s of it to stop).
+# writes the mesh reached, exit 1, as --max-vertices does; one that falls before the initial sample
+# is all inserted and examined writes an empty mesh (the cube at 0.2% needs ~1 s for that here).
 expect 1 "stopped at --max-seconds 1e-09" -- mesh "$TMP/cube.off" --max-seconds 1e-9 -o "$TMP/timed0.off"
 [[ -e "$TMP/timed0.off" ]] && fail "--max-seconds passed before protection, yet $TMP/timed0.off was written"
 grep -q "before protection; nothing written" "$TMP/err" || fail "--max-seconds 1e-9: $(head -c 300 "$TMP/err")"
@@ -280,8 +280,10 @@ read -r nv _ < <(sed -n 2p "$TMP/timed.off")
 [[ "$(value vertices)" -gt 1000 && "$nv" == "$(value vertices)" && "$(value stopped)" == "max-seconds" ]] \
   || fail "--max-seconds in the loop: vertices=$(value vertices), the file holds $nv, stopped=$(value stopped)"
 grep -q "before the initial points" "$TMP/err" && fail "--max-seconds 0.3, no initial sample: stopped in initialisation"
-expect 1 "before the initial points were all inserted and examined" -- mesh "$TMP/cube.off" --size 0.2% --max-seconds 0.3 -o "$TMP/timed_init.off"
+expect 1 "before the initial points were all inserted and examined" -- mesh "$TMP/cube.off" --size 0.2% --max-seconds 0.1 -o "$TMP/timed_init.off"
 [[ -e "$TMP/timed_init.off" ]] || fail "--max-seconds during initialisation: no mesh written"
+[[ "$(value vertices)" == "0" && "$(value disk_condition)" == "unchecked" && "$(value initial_sample)" == "0" ]] \
+  || fail "--max-seconds during initialisation: vertices=$(value vertices) disk_condition=$(value disk_condition) initial_sample=$(value initial_sample)"
 expect 2 "NaN" -- mesh "$TMP/cube.off" --max-seconds nan -o "$TMP/nan.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-seconds -1 -o "$TMP/neg.off"
 

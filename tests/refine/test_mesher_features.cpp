@@ -184,6 +184,39 @@ TEST_CASE("a stop request ends Protect and the mesher where they are, and one ne
   CHECK(loop_mesh.vertices.size() < plain_mesh.vertices.size());
 }
 
+TEST_CASE("a stop inside the batch insertion or the first examination leaves an empty mesh, not a fragment") {
+  // The cube at 0.4%: a batch of ~80,000 points, so the progress points inside
+  // RegularTriangulation::insert (every 2^16 points) and RestrictedFacets::rebuild (every 2^16
+  // cells) are reached, and the stop is thrown from them.
+  refine::PolygonDomain domain(io::make_cube(4));
+  const double lambda = 0.004 * (domain.bounding_box().hi - domain.bounding_box().lo).norm();
+  protect::BallSet set = protect::protect(domain.complex(), lambda);
+  for (const bool in_examination : {false, true}) {
+    refine::ProtectedBalls balls(set);
+    refine::MesherOptions options;
+    options.facet_size = lambda;
+    const refine::Mesher* self = nullptr;
+    std::size_t asked_while_examining = 0;
+    options.stop = [&] {
+      // Records exist only once the first examination has begun.
+      const bool examining = self->restricted_facets().size() > 0;
+      asked_while_examining += examining;
+      return in_examination ? examining : self->triangulation().number_of_vertices() > 1000;
+    };
+    refine::Mesher mesher(domain, balls, options);
+    self = &mesher;
+    mesher.run();
+    CAPTURE(in_examination);
+    CHECK(mesher.stats().stopped_on_request);
+    CHECK_FALSE(mesher.stats().initialised);
+    CHECK((asked_while_examining > 0) == in_examination);
+    CHECK(mesher.output().triangles.empty());
+    CHECK(mesher.output().vertices.empty());
+    CHECK(mesher.failing_vertices().empty());
+    if (!in_examination) CHECK(mesher.triangulation().number_of_vertices() < mesher.stats().sampled);
+  }
+}
+
 TEST_CASE("balls smaller or larger than the facets' size (CGAL's edge_size apart from facet_size)") {
   // Protect(D, λ) of the paper uses one λ; step 2 needs only balls, whatever their size, that
   // meet C1-C3 (run_mesher_and_check checks them and everything else).
