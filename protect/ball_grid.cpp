@@ -55,7 +55,7 @@ std::size_t BallGrid::find_or_add(std::uint64_t h) {
 }
 
 void BallGrid::rebuild_table(std::size_t capacity) {
-  std::vector<Slot> old(capacity);
+  kernel::LargeVector<Slot> old(capacity);
   old.swap(slots_);
   used_ = 0;
   const std::size_t mask = capacity - 1;

@@ -27,6 +27,7 @@
 #include <map>
 #include <vector>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::protect::detail {
@@ -69,9 +70,11 @@ class BallGrid {
   std::size_t find_or_add(std::uint64_t h);
   void rebuild_table(std::size_t capacity);
 
-  std::vector<Slot> slots_;                           // a power of two in size, or empty
+  // From the huge-page pool (kernel/large_array.h): a table of 10^4-10^5 slots in a fresh
+  // std::vector faulted in its pages on every Protect run (+20-30% at 2,000-3,000 balls).
+  kernel::LargeVector<Slot> slots_;                   // a power of two in size, or empty
   std::size_t used_ = 0;                              // slots holding a key
-  std::vector<std::uint32_t> next_, prev_;            // [kTiers id + t]: id's neighbours in its tier-t cell
+  kernel::LargeVector<std::uint32_t> next_, prev_;    // [kTiers id + t]: id's neighbours in its tier-t cell
   std::map<int, std::vector<std::uint32_t>> levels_;  // level -> ids, for the widest queries
   std::vector<std::uint32_t> level_slot_;             // position of id in its level's list
 };
