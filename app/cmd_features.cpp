@@ -72,13 +72,8 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
 
 Runner register_features(CLI::App& app) {
   auto o = std::make_shared<FeaturesOptions>();
-  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL (ASCII or binary) or PLY")->required();
-  app.add_option("--angle", o->angle,
-                 "Feature angle in degrees: an edge whose face normals differ by more is sharp")
-      ->check(range_not_nan(0.0, 180.0));
-  app.add_option("--corner-angle", o->corner_angle,
-                 "A curve turning by more than this many degrees at a vertex gets a corner there")
-      ->check(range_not_nan(0.0, 180.0));
+  add_model_input(app, o->input);
+  add_feature_angles(app, o->angle, o->corner_angle);
   app.add_option("-o,--output", o->output,
                  "Write the complex (patches and curves labelled): .vtu for ParaView, .mesh (Medit)");
   app.add_option("--preview", o->preview,

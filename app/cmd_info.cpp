@@ -81,7 +81,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
 
 Runner register_info(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
-  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL or PLY")->required();
+  add_model_input(app, o->input);
   app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
       ->check(range_not_nan(0.0, 180.0));
   app.footer(

@@ -330,7 +330,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
 
 Runner register_mesh(CLI::App& app) {
   auto o = std::make_shared<MeshCommandOptions>();
-  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL (ASCII or binary) or PLY")->required();
+  add_model_input(app, o->input);
   app.add_option("-o,--output", o->output,
                  "The mesh: .mesh (Medit, patch and curve labels), .vtu (ParaView), .off, .obj, .ply or .stl")
       ->required();
@@ -341,12 +341,7 @@ Runner register_mesh(CLI::App& app) {
                  "The largest protecting ball radius along the feature curves (CGAL's edge_size), a length or a "
                  "percentage of the diagonal (default: --size), at least 1/64 of it; smaller gives finer curves, "
                  "larger coarser ones");
-  app.add_option("--angle", o->angle,
-                 "Feature angle in degrees: an edge whose face normals differ by more is sharp")
-      ->check(range_not_nan(0.0, 180.0));
-  app.add_option("--corner-angle", o->corner_angle,
-                 "A curve turning by more than this many degrees at a vertex gets a corner there")
-      ->check(range_not_nan(0.0, 180.0));
+  add_feature_angles(app, o->angle, o->corner_angle);
   app.add_option("--facet-distance", o->facet_distance,
                  "Largest distance between a triangle's circumcentre and the surface point it stands for (CGAL's "
                  "facet_distance), a length or a percentage of the diagonal (default: off)");

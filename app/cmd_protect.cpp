@@ -159,16 +159,11 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
 
 Runner register_protect(CLI::App& app) {
   auto o = std::make_shared<ProtectCommandOptions>();
-  app.add_option("IN", o->input, "Polygon model: OFF, OBJ, STL (ASCII or binary) or PLY")->required();
+  add_model_input(app, o->input);
   app.add_option("--size", o->size,
                  "λ, the largest ball radius: a length, or a percentage of the bounding-box diagonal (1%)")
       ->required();
-  app.add_option("--angle", o->angle,
-                 "Feature angle in degrees: an edge whose face normals differ by more is sharp")
-      ->check(range_not_nan(0.0, 180.0));
-  app.add_option("--corner-angle", o->corner_angle,
-                 "A curve turning by more than this many degrees at a vertex gets a corner there")
-      ->check(range_not_nan(0.0, 180.0));
+  add_feature_angles(app, o->angle, o->corner_angle);
   app.add_option("--balls", o->balls_path,
                  "Write the balls as text: 'corner ID X Y Z R' lines, then per curve "
                  "'curve ID START END N' and its N interior balls 'X Y Z R' in order");

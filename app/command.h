@@ -50,6 +50,21 @@ inline CLI::Validator range_not_nan(double lo, double hi) {
   return CLI::Range(lo, hi) & not_nan;
 }
 
+/// The model to read, the positional IN of every command that reads one.
+inline void add_model_input(CLI::App& app, std::string& input) {
+  app.add_option("IN", input, "Polygon model: OFF, OBJ, STL (ASCII or binary) or PLY")->required();
+}
+
+/// --angle and --corner-angle, which decide the complex (protect::build_complex) for features,
+/// protect and mesh alike.
+inline void add_feature_angles(CLI::App& app, double& angle, double& corner_angle) {
+  app.add_option("--angle", angle, "Feature angle in degrees: an edge whose face normals differ by more is sharp")
+      ->check(range_not_nan(0.0, 180.0));
+  app.add_option("--corner-angle", corner_angle,
+                 "A curve turning by more than this many degrees at a vertex gets a corner there")
+      ->check(range_not_nan(0.0, 180.0));
+}
+
 /// A subcommand registers its options on `app` and returns the function that runs it.
 using Runner = std::function<int(const GlobalOptions&)>;
 
