@@ -23,6 +23,16 @@ VertexPlace on_patch(std::uint32_t patch) {
   return v;
 }
 
+// A protecting ball's vertex: its key, and the curve or corner it protects.
+VertexPlace of_ball(BallKey key, const ProtectingBall& b) {
+  VertexPlace v;
+  v.kind = VertexPlace::Kind::ball;
+  v.ball = key;
+  v.curve = b.curve;
+  v.corner = b.corner;
+  return v;
+}
+
 }  // namespace
 
 Mesher::Mesher(const Domain& domain, BallSource& balls, const MesherOptions& options)
@@ -101,12 +111,7 @@ void Mesher::initialise() {
   for (const BallKey k : keys) {
     const ProtectingBall b = balls_->ball(k);
     points.push_back(WeightedPoint::from(b.centre, b.radius * b.radius));
-    VertexPlace v;
-    v.kind = VertexPlace::Kind::ball;
-    v.ball = k;
-    v.curve = b.curve;
-    v.corner = b.corner;
-    places.push_back(v);
+    places.push_back(of_ball(k, b));
   }
   std::vector<Vec3> seeds;
   std::vector<std::uint32_t> seed_patch;
@@ -311,12 +316,7 @@ bool Mesher::far_off_dual_edge(const RestrictedFacet& r, CellId& where) const {
 PointId Mesher::insert_ball(BallKey key) {
   const ProtectingBall b = balls_->ball(key);
   const PointId id = static_cast<PointId>(dt_.number_of_points());
-  VertexPlace v;
-  v.kind = VertexPlace::Kind::ball;
-  v.ball = key;
-  v.curve = b.curve;
-  v.corner = b.corner;
-  places_.push_back(v);
+  places_.push_back(of_ball(key, b));
   dt_.insert(WeightedPoint::from(b.centre, b.radius * b.radius), &changes_);
   ball_point_[key] = id;
   // Unweighted points the new ball hides are forgotten (they would break admissibility).
