@@ -4,9 +4,10 @@
 //  - Protection (§2): a ball of radius at most λ covers at most 2λ of a curve, so the curves need
 //    at least (total curve length) / 2λ balls; more than protect's max_balls cannot succeed.
 //  - Refinement (§3): with facet_size λ alone the output has 0.66 A / λ² vertices for surface
-//    area A on every libcgal-demo model (fandisk, part, anchor, joint, elephant at 0.5%); about
-//    1.5 KB of memory per vertex while meshing (joint at 0.25%: 237,452 vertices, 354 MB peak RSS;
-//    BENCHMARKS.md, "Input checks and memory of delpsc mesh").
+//    area A on every libcgal-demo model (fandisk, part, anchor, joint, elephant at 0.5%); 1.1 to
+//    1.4 KB of memory per vertex at the peak of `delpsc mesh`, since the mesher is freed before
+//    the checks and the distances to the input (session 25: the cube at 0.1%, 1,101,956 vertices,
+//    1.20 GB; hand at 0.5%, 237,157 vertices, 314 MB; BENCHMARKS.md, "Session 25").
 #pragma once
 
 #include <sys/resource.h>
@@ -64,8 +65,8 @@ inline double approximation_spacing(double lambda, double expected, std::size_t 
   return lambda / 2 * std::max(1.0, std::sqrt(samples_at_half / most_samples));
 }
 
-/// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.5-1.8 KB, see above).
-inline constexpr double kMeshBytesPerVertex = 1.8e3;
+/// Peak memory of `delpsc mesh` per output vertex, rounded up (measured 1.1-1.4 KB, see above).
+inline constexpr double kMeshBytesPerVertex = 1.4e3;
 
 /// The memory this process may use, in bytes: the machine's physical memory (POSIX sysconf; 16 GB
 /// if it cannot tell), or less where a limit says so - the address-space limit (`ulimit -v`) and
