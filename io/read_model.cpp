@@ -80,6 +80,10 @@ ReadResult read_model(const std::string& path) {
 
 ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, const std::string& name) {
   detail::SoupBuilder builder(name);
+  // A UTF-8 byte-order mark, which some Windows editors put before any text: not part of an OFF
+  // or OBJ file's content (STL's and PLY's first bytes are their own: a binary header, "ply").
+  if ((format == ModelFormat::off || format == ModelFormat::obj) && bytes.starts_with("\xEF\xBB\xBF"))
+    bytes.remove_prefix(3);
   switch (format) {
     case ModelFormat::off: detail::parse_off(bytes, builder); break;
     case ModelFormat::obj: detail::parse_obj(bytes, builder); break;

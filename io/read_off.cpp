@@ -110,6 +110,13 @@ void parse_off(std::string_view bytes, SoupBuilder& out) {
     if (k < 3)
       out.fail(at_line(in.line()), "face " + std::to_string(f) + " has " + std::to_string(k) +
                                        " vertices; at least 3 are needed");
+    // More corners than the model has vertices and than the rest of the file holds indices (two
+    // bytes each at least, "0 "): a wrong number, not a truncated file (the loop below would read
+    // the next faces as its indices, then report the end of the file).
+    if (k > nv && static_cast<std::uint64_t>(k) > (bytes.size() - in.offset()) / 2 + 1)
+      out.fail(at_line(in.line()), "face " + std::to_string(f) + " says it has " + std::to_string(k) +
+                                       " vertices, more than the model's " + std::to_string(nv) +
+                                       " and than the rest of the file can hold");
     polygon.clear();
     for (std::int64_t j = 0; j < k; ++j) {
       tok = in.token();

@@ -104,6 +104,8 @@ TEST_CASE("OFF: errors name the line and the problem") {
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n", "unexpected end of file in vertex 2 of 3"},
       {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "unexpected end of file in face 1 of 2"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1", "unexpected end of file in face 0 of 1"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n3 0 1 2\n",
+       "line 6: face 0 says it has 4000000000 vertices, more than the model's 3 and than the rest of the file"},
       {"OFF\n99999999999 1 0\n0 0 0\n", "line 2: the header announces 99999999999 vertices"},
       {"OFF\n3 4000000000 0\n0 0 0\n1 0 0\n0 1 0\n", "announces 4000000000 faces"},
       {"OFF\n-3 1 0\n", "negative vertex or face count"},
@@ -121,6 +123,18 @@ TEST_CASE("OFF: errors name the line and the problem") {
     CHECK_MESSAGE(msg.rfind("mem.off: ", 0) == 0, msg);
     CHECK_MESSAGE(msg.find(c.fragment) != std::string::npos, "got: " << msg << "\nwant: " << c.fragment);
   }
+}
+
+TEST_CASE("OFF and OBJ: a UTF-8 byte-order mark before the text is skipped") {
+  const std::string bom = "\xEF\xBB\xBF";
+  const auto off = read_bytes(bom + kCube, io::ModelFormat::off);
+  CHECK(off.soup.triangles.size() == 12);
+  CHECK(off.report.warnings.empty());
+  const auto obj = read_bytes(bom + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", io::ModelFormat::obj);
+  CHECK(obj.soup.triangles.size() == 1);
+  // Only at the very start: the same bytes anywhere else are still garbage.
+  CHECK(!io_error_of([&] { read_bytes("OFF\n" + bom + "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", io::ModelFormat::off); })
+             .empty());
 }
 
 TEST_CASE("OFF: text after the last face is a warning, not an error") {
