@@ -9,6 +9,7 @@
 #include "command.h"
 #include "model_input.h"
 #include "output_paths.h"
+#include "stl_precision.h"
 
 namespace delpsc::app {
 
@@ -50,9 +51,13 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
                    complex.patches[p].euler_characteristic, complex.patches[p].boundary_loops);
   }
   if (!o.output.empty() || !o.preview.empty()) {
-    const io::SurfaceMesh mesh = protect::to_surface_mesh(complex);
+    io::SurfaceMesh mesh = protect::to_surface_mesh(complex);
+    move_to_file_frame(mesh.vertices);
     try {
-      if (!o.output.empty()) io::write_mesh(o.output, mesh);
+      if (!o.output.empty()) {
+        io::write_mesh(o.output, mesh);
+        warn_if_stl_collapses(o.output, mesh, g);
+      }
       if (!o.preview.empty()) {
         io::PreviewOptions preview;
         preview.title = o.input + ": " + std::to_string(complex.corner_count()) + " corners, " +

@@ -1,6 +1,7 @@
 // `delpsc info`: what a model is made of and what is wrong with it, before meshing.
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/folds.h>
+#include <charconv>
 #include <limits>
 #include <stdexcept>
 
@@ -32,9 +33,14 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     boundary += (complex.edge_feature[e] & protect::kBoundaryEdge) != 0;
     non_manifold += (complex.edge_feature[e] & protect::kNonManifoldEdge) != 0;
   }
-  char box[160];
-  std::snprintf(box, sizeof box, "%.9g %.9g %.9g %.9g %.9g %.9g", lo.x(), lo.y(), lo.z(), hi.x(),
-                hi.y(), hi.z());
+  // Shortest round-trip digits: a model far from the origin (1e9 + its size of 1) keeps its extent.
+  std::string box;
+  for (const Vec3& corner : {in_file_frame(lo), in_file_frame(hi)})
+    for (int k = 0; k < 3; ++k) {
+      char digits[32];
+      const auto end = std::to_chars(digits, digits + sizeof digits, corner[k]).ptr;
+      box += (box.empty() ? "" : " ") + std::string(digits, end);
+    }
   report("format", model.report.format);
   report("vertices", soup.vertices.size());
   report("triangles", soup.triangles.size());
@@ -42,7 +48,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("zero_area_triangles", model.report.degenerate_triangles.size());
   report("boundary_edges", boundary);
   report("non_manifold_edges", non_manifold);
-  report("bbox", std::string(box));
+  report("bbox", box);
   report("diagonal", (hi - lo).norm());
   report("corners", complex.corner_count());
   report("curves", complex.curve_count());
@@ -50,21 +56,12 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
   const std::size_t crossing = protect::find_self_intersections(complex, kSelfIntersectionsCounted).size();
   report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
-  // The sharpest edge between two triangles: a fold of a few degrees meshes, but refinement must
-  // sample its two sheets apart (hand.off's 2.1° flap took 96% of 97,899 vertices at 2%).
-  // Every edge with two triangles counts: any radius, any angle below 181° (a flat edge is 180).
-  const auto sharpest = protect::sharpest_fold_near(complex, 0.5 * (lo + hi), std::numeric_limits<double>::infinity(), 181);
+  // The sharpest edge between two triangles (input_defects.h).
+  const auto sharpest = sharpest_fold(complex);
   report("sharpest_fold_degrees", sharpest ? sharpest->dihedral_degrees : 180.0);
   report("warnings", model.report.warnings.size());
-  if (sharpest && sharpest->dihedral_degrees < kDefectDegrees && !g.quiet) {
-    const Vec3& a = complex.vertices[complex.edges[sharpest->edge][0]];
-    const Vec3& b = complex.vertices[complex.edges[sharpest->edge][1]];
-    std::fprintf(stderr,
-                 "delpsc: warning: %s: two triangles meet at only %.3g degrees, on the edge from (%.6g, %.6g, %.6g) "
-                 "to (%.6g, %.6g, %.6g) (a fold of the surface, or a very sharp edge); `delpsc mesh` samples the "
-                 "two sheets apart there, which can take many times the vertices the size asks for\n",
-                 o.input.c_str(), sharpest->dihedral_degrees, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
-  }
+  if (const std::string fold = fold_warning(complex, sharpest, o.input); !fold.empty() && !g.quiet)
+    std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
   if (crossing > 0 && !g.quiet)
     std::fprintf(stderr,
                  "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",

@@ -30,6 +30,7 @@
 #include "progress.h"
 #include "size_limits.h"
 #include "size_option.h"
+#include "stl_precision.h"
 #include "time_limit.h"
 
 namespace delpsc::app {
@@ -66,7 +67,7 @@ struct FailingVertex {
 std::vector<FailingVertex> failing_vertices_of(const refine::Mesher& mesher) {
   std::vector<FailingVertex> out;
   for (const auto& [p, verdict] : mesher.failing_vertices())
-    out.push_back({p, mesher.triangulation().point(p).point(), verdict});
+    out.push_back({p, in_file_frame(mesher.triangulation().point(p).point()), verdict});
   return out;
 }
 
@@ -105,6 +106,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (domain.complex().triangles.empty())
     throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
   reject_pinched_patches(domain.complex(), o.input);
+  if (!g.quiet)
+    if (const std::string fold = fold_warning(domain.complex(), sharpest_fold(domain.complex()), o.input); !fold.empty())
+      std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());
   // CGAL's edge_size: the largest protecting ball radius, λ unless given (Protect(D, λ) of the
@@ -198,7 +202,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   }
   const double seconds_refine = seconds_since(t_refine);
   phases.emplace_back("refine", seconds_refine);
-  const io::SurfaceMesh mesh = meshing->output();
+  io::SurfaceMesh mesh = meshing->output();
   const double seconds = seconds_since(t0);
   const std::vector<FailingVertex> failing_vertices = failing_vertices_of(*meshing);
   const std::size_t failing = failing_vertices.size();
@@ -301,7 +305,11 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("output", mesh.vertices.size());
   const auto t_output = Clock::now();
   try {
+    // Last use of the coordinates: the checks and distances above ran in the moved frame, where
+    // the mesh was made; the file gets the input's frame (rounded to its precision).
+    move_to_file_frame(mesh.vertices);
     io::write_mesh(o.output, mesh);
+    warn_if_stl_collapses(o.output, mesh, g);
     if (!o.preview.empty()) {
       io::PreviewOptions preview;
       char title[256];
@@ -317,7 +325,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   }
   if (!o.balls_path.empty()) {
     std::ofstream out(o.balls_path, std::ios::binary);
-    out << protect::balls_to_text(*ball_set);
+    out << protect::balls_to_text(*ball_set, model_offset());
     out.close();
     if (!out) throw Failure{kBadInput, o.balls_path + ": cannot write"};
   }

@@ -75,7 +75,7 @@ std::string balls_vtu(const protect::BallSet& balls) {
       std::to_string(ids.size()) + "\" NumberOfCells=\"" + std::to_string(ids.size() + lines.size()) +
       "\">\n      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const protect::BallId id : ids)
-    for (int k = 0; k < 3; ++k) append_number(out, balls[id].centre[k]);
+    for (int k = 0; k < 3; ++k) append_number(out, in_file_frame(balls[id].centre)[k]);
   out += "\n        </DataArray>\n      </Points>\n      <PointData Scalars=\"radius\">\n"
          "        <DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
   for (const protect::BallId id : ids) append_number(out, balls[id].radius);
@@ -150,7 +150,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
     report("valid", valid);
     for (const auto& p : check.problems) std::fprintf(stderr, "delpsc: %s\n", p.c_str());
   }
-  if (!o.balls_path.empty()) write_file(o.balls_path, protect::balls_to_text(*balls));
+  if (!o.balls_path.empty()) write_file(o.balls_path, protect::balls_to_text(*balls, model_offset()));
   if (!o.vtu_path.empty()) write_file(o.vtu_path, balls_vtu(*balls));
   return valid ? kOk : kCheckFailed;
 }

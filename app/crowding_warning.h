@@ -31,6 +31,7 @@ inline std::string crowding_warning(const io::SurfaceMesh& mesh, const protect::
   if (!(expected > 0) || n <= kCrowdedRun * expected) return {};
   const refine::VertexCrowd crowd = refine::densest_crowd(mesh.vertices, lambda);
   const std::string defect = input_defect_near(complex, crowd.centre, 2 * lambda);
+  const Vec3 centre = in_file_frame(crowd.centre);
   // The densest box may hold most of them (hand.off: 97%) or a few (blade.off at 2%: 4%; a
   // fold along a long edge spreads them along it): the share says which, and the defect named is
   // the one at the box, not necessarily the cause of the rest.
@@ -41,8 +42,7 @@ inline std::string crowding_warning(const io::SurfaceMesh& mesh, const protect::
   std::snprintf(text, sizeof text,
                 "%zu vertices, %.0f times what --size %s needs on this model's area; the densest box 3 λ wide, "
                 "around (%.6g, %.6g, %.6g), holds %zu of them (%.0f%%)%s: %s",
-                mesh.vertices.size(), n / expected, size_text.c_str(), crowd.centre.x(), crowd.centre.y(),
-                crowd.centre.z(), crowd.vertices, 100 * share,
+                mesh.vertices.size(), n / expected, size_text.c_str(), centre.x(), centre.y(), centre.z(), crowd.vertices, 100 * share,
                 share < kOneSpot ? ", the rest elsewhere" : "", defect.empty() ? otherwise : defect.c_str());
   return text;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <delpsc/io/error.h>
+#include <delpsc/io/model_frame.h>
 #include <delpsc/io/read_model.h>
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
@@ -12,9 +13,12 @@
 #include <string>
 
 #include "command.h"
+#include "file_frame.h"
 
 namespace delpsc::app {
 
+/// Reads the model and moves it next to the origin when it lies far from it (exactly; see
+/// io/model_frame.h and model_offset()).
 inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g) {
   io::ReadResult result;
   try {
@@ -22,6 +26,7 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
   } catch (const io::Error& e) {
     throw Failure{kBadInput, e.what()};
   }
+  model_offset() = io::move_near_origin(result.soup.vertices);
   if (!g.quiet) {
     for (const auto& w : result.report.warnings)
       std::fprintf(stderr, "delpsc: warning: %s\n", w.c_str());
@@ -67,7 +72,7 @@ inline constexpr double kNearContactFraction = 1e-9;
 /// scale, and ran for minutes towards the vertex cap on a tetrahedron 1e-15 thick.
 inline void reject_near_contact(const protect::Complex& complex, const std::array<std::uint32_t, 2>& pair,
                                 double tolerance, const std::string& path) {
-  const Vec3& p = complex.vertices[pair[0]];
+  const Vec3 p = in_file_frame(complex.vertices[pair[0]]);
   char message[512];
   std::snprintf(message, sizeof message,
                 "%s: the model nearly touches itself: vertex %u (%.9g, %.9g, %.9g) lies within %.3g (%g of the "
@@ -98,6 +103,7 @@ inline void reject_self_intersections(const protect::Complex& complex, const ker
   const auto [s, t] = pairs.front();
   Vec3 c = Vec3::Zero();
   for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;
+  c = in_file_frame(c);
   char message[512];
   std::snprintf(message, sizeof message,
                 "%s: the model intersects itself: triangles %u and %u (counted after splitting polygons into "
@@ -121,7 +127,7 @@ inline void reject_self_intersections(const protect::Complex& complex, const std
 inline void reject_pinched_patches(const protect::Complex& complex, const std::string& path) {
   if (complex.pinches.empty()) return;
   const auto [v, patch] = complex.pinches.front();
-  const Vec3& p = complex.vertices[v];
+  const Vec3 p = in_file_frame(complex.vertices[v]);
   char message[800];
   std::snprintf(message, sizeof message,
                 "%s: patch %u touches itself only at the vertex (%.9g, %.9g, %.9g)%s: two fans of its triangles "

@@ -31,4 +31,10 @@ void write_mesh(const std::string& path, const SurfaceMesh& mesh);
 /// The file contents write_mesh would produce (tests and in-memory users).
 std::string format_mesh(const SurfaceMesh& mesh, MeshFormat format);
 
+/// How many triangles of `mesh` have no area once their corners are rounded to float, as .stl
+/// stores them: two corners rounded to one point, or the three on a line. Far from the origin
+/// float's 24 bits run out (a mesh 1e6 away with triangles of 1e-2), and a caller can say so
+/// instead of writing a file with holes in it. O(triangles).
+std::size_t triangles_collapsed_in_float(const SurfaceMesh& mesh);
+
 }  // namespace delpsc::io

@@ -8,6 +8,7 @@
 #include "byte_order.h"
 #include "error.h"
 #include "mesh_formats.h"
+#include "mesh_writer.h"
 
 namespace delpsc::io::detail {
 
@@ -101,3 +102,22 @@ void format_stl(const SurfaceMesh& mesh, std::string& out) {
 }
 
 }  // namespace delpsc::io::detail
+
+namespace delpsc::io {
+
+std::size_t triangles_collapsed_in_float(const SurfaceMesh& mesh) {
+  const auto rounded = [&](std::uint32_t v) {
+    const Vec3& p = mesh.vertices[v];
+    return Vec3(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
+  };
+  std::size_t collapsed = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 a = rounded(t[0]), b = rounded(t[1]), c = rounded(t[2]);
+    // Differences of floats are exact in double as long as the two are within 2^29 of each
+    // other's scale; the cross product then rounds, so a line is found up to that rounding.
+    collapsed += a == b || b == c || c == a || (b - a).cross(c - a) == Vec3::Zero();
+  }
+  return collapsed;
+}
+
+}  // namespace delpsc::io

@@ -238,14 +238,14 @@ void BallSet::remove_interior(BallId id) {
   kill(id);
 }
 
-std::string balls_to_text(const BallSet& balls) {
+std::string balls_to_text(const BallSet& balls, const Vec3& offset) {
   const Complex& complex = balls.complex();
   std::string out;
   char line[64];
   char numbers[128];  // 4 numbers of at most 24 characters
   auto ball_line = [&](const Ball& b) {
-    std::snprintf(numbers, sizeof numbers, "%.17g %.17g %.17g %.17g\n", b.centre.x(), b.centre.y(), b.centre.z(),
-                  b.radius);
+    const Vec3 centre = b.centre + offset;
+    std::snprintf(numbers, sizeof numbers, "%.17g %.17g %.17g %.17g\n", centre.x(), centre.y(), centre.z(), b.radius);
     out += numbers;
   };
   for (std::uint32_t k = 0; k < complex.corner_count(); ++k) {

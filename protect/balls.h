@@ -156,6 +156,8 @@ class BallSet {
 ///   curve ID START_CORNER_ID END_CORNER_ID N        one block per curve (closed: START == END)
 ///   X Y Z R                                         N lines, the curve's interior balls in order
 /// Numbers in shortest round-trip form (%.17g), so a reader gets the doubles back exactly.
-std::string balls_to_text(const BallSet& balls);
+/// `offset` is added to every centre (a model moved near the origin, written in its file's frame;
+/// io/model_frame.h); with the default the doubles are written as they are.
+std::string balls_to_text(const BallSet& balls, const Vec3& offset = Vec3::Zero());
 
 }  // namespace delpsc::protect

@@ -73,6 +73,21 @@ TEST_CASE("binary STL from the writer never looks like ASCII and carries unit no
   CHECK((n[0] == 0.f && n[1] == 0.f && n[2] == 0.f));
 }
 
+TEST_CASE("triangles that rounding to STL's floats flattens are counted") {
+  io::SurfaceMesh m;
+  // Near the origin, a triangle of 1e-3 survives float; 1e9 away (float's spacing there is 64) a
+  // triangle of size 1 loses its corners to one point, and one of size 100 keeps an area; a
+  // needle whose apex rounds onto its base line is flat too.
+  m.vertices = {{0, 0, 0}, {1e-3, 0, 0}, {0, 1e-3, 0},
+                {1e9, 0, 0}, {1e9 + 1, 0, 0}, {1e9, 1, 0},
+                {1e9, 0, 0}, {1e9 + 100, 0, 0}, {1e9, 100, 0},
+                {0, 1, 0}, {1, 1, 0}, {0.5, 1 + 1e-9, 0}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
+  CHECK(io::triangles_collapsed_in_float(m) == 2);
+  m.triangles = {{0, 1, 2}, {6, 7, 8}};
+  CHECK(io::triangles_collapsed_in_float(m) == 0);
+}
+
 TEST_CASE("writers refuse unknown extensions and inconsistent meshes") {
   io::SurfaceMesh m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
