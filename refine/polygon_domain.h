@@ -10,6 +10,12 @@
 //
 // Cost: construction O(T log T) for the tree (the complex is built beforehand); a segment query
 // O(log T + k) box tests and exact triangle tests for k triangles met, plus O(k log k) merging.
+//
+// Coordinates: the predicates are exact anywhere, but the mesher's constructions (orthocentres,
+// surface points) lose a bit for every doubling of the model's distance from the origin over its
+// size; a model far out (millions of diagonals: G1 fails by rounding; 10^9: refinement rejects its own
+// points for minutes) should first be moved next to the origin, exactly, by io::move_near_origin
+// (io/model_frame.h), as `delpsc mesh` does.
 #pragma once
 
 #include <delpsc/protect/complex.h>
