@@ -32,8 +32,7 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
   const protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (complex.triangles.empty())
-    throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
+  reject_empty_complex(complex, model, o.input, "mesh");
 
   report("triangles", complex.triangles.size());
   report("zero_area_triangles", complex.cleanup.zero_area_triangles.size());

@@ -103,8 +103,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   // The domain's tree serves the input checks too (a second tree was ~5% of meshing fandisk at 2%).
   const refine::PolygonDomain domain(load_complex(model, o.input, o.angle, o.corner_angle, g));
   reject_self_intersections(domain.complex(), domain.tree(), o.input);
-  if (domain.complex().triangles.empty())
-    throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to mesh"};
+  reject_empty_complex(domain.complex(), model, o.input, "mesh");
   reject_pinched_patches(domain.complex(), o.input);
   if (!g.quiet)
     if (const std::string fold = fold_warning(domain.complex(), sharpest_fold(domain.complex()), o.input); !fold.empty())

@@ -109,8 +109,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   const io::ReadResult model = load_model(o.input, g);
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input);
-  if (complex.triangles.empty())
-    throw Failure{kBadInput, o.input + ": no triangle of non-zero area: nothing to protect"};
+  reject_empty_complex(complex, model, o.input, "protect");
 
   const double diagonal = protect::BallSet(complex).diagonal();
   const double lambda = parse_size(o.size, diagonal);

@@ -60,6 +60,22 @@ inline protect::Complex load_complex(const io::ReadResult& model, const std::str
   return complex;
 }
 
+/// A bad-input exit when no triangle of the model is left to `verb` (mesh, protect): all have
+/// zero area, or an angle so near 180° (protect::CleanupReport::flat_caps) that they were set
+/// aside with them. The message counts both: a needle of height 1e-7 on a base of 1 has an area,
+/// and "no triangle of non-zero area" alone sent its user looking for the wrong defect.
+inline void reject_empty_complex(const protect::Complex& complex, const io::ReadResult& model, const std::string& path,
+                                 const char* verb) {
+  if (!complex.triangles.empty()) return;
+  const std::size_t flat = complex.cleanup.flat_caps.size();
+  std::string why = "no triangle of non-zero area";
+  if (flat > 0)
+    why = "no triangle left: of the model's " + std::to_string(model.soup.triangles.size()) + ", " +
+          std::to_string(flat) + " have an angle within 1e-4 rad of 180 degrees (nearly flat) and " +
+          std::to_string(complex.cleanup.zero_area_triangles.size()) + " zero area, and all are set aside";
+  throw Failure{kBadInput, path + ": " + why + ": nothing to " + verb};
+}
+
 /// At most this many self-intersecting pairs are looked for (info reports ">= this" as this).
 inline constexpr std::size_t kSelfIntersectionsCounted = 100;
 

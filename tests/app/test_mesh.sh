@@ -92,6 +92,12 @@ expect 1 "max-vertices" -- mesh "$TMP/cube.off" --size 2% --max-vertices 1000 -o
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% --facet-distance 0.1% --facet-angle 30 -o "$TMP/criteria.off" -v
 [[ "$(value vertices)" -ge "$v" ]] || fail "criteria gave $(value vertices) vertices, size alone $v"
 [[ "$(value disk_condition)" == "ok" ]] || fail "criteria: disk_condition=$(value disk_condition)"
+# Nothing left to mesh: zero-area triangles only, or a needle (height 1e-7 on a base of 1) whose
+# angle near 180 degrees sets it aside with them - the message says which.
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n' >"$TMP/line.off"
+expect 2 "no triangle of non-zero area: nothing to mesh" -- mesh "$TMP/line.off" -o "$TMP/x.off"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0.5 1e-7 0\n3 0 1 2\n' >"$TMP/needle.off"
+expect 2 "1 have an angle within 1e-4 rad of 180 degrees (nearly flat)" -- mesh "$TMP/needle.off" -o "$TMP/x.off"
 expect 2 "facet-angle" -- mesh "$TMP/cube.off" --facet-angle 31 -o "$TMP/x.off"
 expect 2 "--facet-distance" -- mesh "$TMP/cube.off" --facet-distance -1 -o "$TMP/x.off"
 
