@@ -33,6 +33,33 @@ write_crossing() {
   printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0.2 0.2 -0.5\n0.3 0.3 0.5\n0.9 0.1 0.5\n3 0 1 2\n3 3 4 5\n' >"$1"
 }
 
+# write_far_cube FILE: the unit cube moved by (1e9, 2e9, -3e9), exactly (integers below 2^53): a
+# model far from the origin, which the commands mesh next to it and write back in its frame.
+write_far_cube() {
+  write_cube "$1.near"
+  awk 'NR > 2 && NR <= 10 { printf "%.0f %.0f %.0f\n", $1 + 1000000000, $2 + 2000000000, $3 - 3000000000; next } { print }' \
+    "$1.near" >"$1"
+}
+
+# in_far_cube FILE...: the coordinates in FILE (its numbers above 1e8 in magnitude, taken three at
+# a time line by line: radii, ids and labels are smaller) lie within 0.01 of the far cube
+# (write_far_cube), and there are at least 8 points.
+in_far_cube() {
+  python3 - "$@" <<'CHECK'
+import re, sys
+points = []
+for path in sys.argv[1:]:
+    for line in open(path):
+        big = [float(x) for x in re.findall(r"-?[0-9][0-9.e+-]*", line) if abs(float(x)) > 1e8]
+        if len(big) % 3:
+            sys.exit("%s: a line with %d coordinates: %s" % (path, len(big), line[:80]))
+        points += [big[i:i + 3] for i in range(0, len(big), 3)]
+far = [(1e9, 1e9 + 1), (2e9, 2e9 + 1), (-3e9, -3e9 + 1)]
+ok = len(points) >= 8 and all(lo - 0.01 <= c <= hi + 0.01 for p in points for c, (lo, hi) in zip(p, far))
+sys.exit(not ok)
+CHECK
+}
+
 # write_cube FILE: the unit cube [0,1]^3 as an OFF file, 12 outward-oriented triangles.
 write_cube() {
   cat >"$1" <<'MODEL'

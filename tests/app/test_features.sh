@@ -41,4 +41,10 @@ expect 0 "" -- -q features "$TMP/flat-cap.off"
 if grep -q "flat triangle" "$TMP/err"; then fail "-q still warns of the flat cap"; else pass; fi
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- features "$TMP/crossing.off"
+
+# A model far from the origin: its complex is computed next to it and written in its own frame.
+write_far_cube "$TMP/far.off"
+expect 0 "" -- features "$TMP/far.off" -o "$TMP/far.mesh"
+[[ "$(value corners)" == "8" && "$(value curves)" == "12" && "$(value patches)" == "6" ]] || fail "far cube's complex"
+in_far_cube "$TMP/far.mesh" || fail "far cube: features' mesh not in the model's frame"
 finish

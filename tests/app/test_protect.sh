@@ -99,4 +99,12 @@ expect 2 "--report $TMP/b.txt: the same file as --balls $TMP/b.txt" -- \
 expect 1 "protection stopped on request with" -- protect "$TMP/cube.off" --size 0.001% --max-seconds 0.3 --balls "$TMP/timed.txt"
 [[ ! -e "$TMP/timed.txt" ]] || fail "--max-seconds: balls written after the stop"
 expect 2 "NaN" -- protect "$TMP/cube.off" --size 1% --max-seconds nan
+
+# A model far from the origin is protected next to it (io/model_frame.h); the balls' centres are
+# written in its own frame, the corners' exactly at its corners.
+write_far_cube "$TMP/far.off"
+expect 0 "" -- protect "$TMP/far.off" --size 0.1 --balls "$TMP/far-balls.txt" -o "$TMP/far-balls.vtu" --check
+[[ "$(value valid)" == "true" && "$(value corner_balls)" == "8" ]] || fail "far cube: valid=$(value valid) corner_balls=$(value corner_balls)"
+in_far_cube "$TMP/far-balls.txt" && in_far_cube "$TMP/far-balls.vtu" || fail "far cube: ball centres not in the model's frame"
+grep -q "^corner 6 1000000001 2000000001 -2999999999 " "$TMP/far-balls.txt" || fail "far cube: corner 6 not at its vertex"
 finish
