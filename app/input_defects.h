@@ -26,9 +26,9 @@ inline constexpr double kDefectDegrees = 15;
 /// The smallest dihedral angle of the model over every edge with two triangles (any radius, any
 /// angle below 181°; a flat edge is 180), or nullopt when no edge has two. O(edges).
 inline std::optional<protect::Fold> sharpest_fold(const protect::Complex& complex) {
-  kernel::Box3 box;
-  for (const Vec3& p : complex.vertices) box.extend(p);
-  return protect::sharpest_fold_near(complex, 0.5 * (box.lo + box.hi), std::numeric_limits<double>::infinity(), 181);
+  // Within an infinite radius of any point: every edge (a distance that overflows is still not
+  // above infinity).
+  return protect::sharpest_fold_near(complex, Vec3::Zero(), std::numeric_limits<double>::infinity(), 181);
 }
 
 /// A warning for a fold sharper than kDefectDegrees, or empty: a fold of a few degrees meshes, but

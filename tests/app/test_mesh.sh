@@ -98,6 +98,12 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n' >"$TMP/line.off"
 expect 2 "no triangle of non-zero area: nothing to mesh" -- mesh "$TMP/line.off" -o "$TMP/x.off"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0.5 1e-7 0\n3 0 1 2\n' >"$TMP/needle.off"
 expect 2 "1 have an angle within 1e-4 rad of 180 degrees (nearly flat)" -- mesh "$TMP/needle.off" -o "$TMP/x.off"
+# A fold sharper than 15 degrees (a tetrahedron 1e-3 high: runs past a minute at 10%) is named
+# before meshing starts; capped here so the run stops at once (exit 1).
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 1e-3\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n' >"$TMP/flat.off"
+expect 1 "two triangles meet at only 0.191 degrees" -- mesh "$TMP/flat.off" --size 10% --max-vertices 50 -o "$TMP/flat_out.off"
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/cube_fold.off"
+! grep -q "two triangles meet" "$TMP/err" || fail "the cube (90-degree edges) warned of a fold"
 expect 2 "facet-angle" -- mesh "$TMP/cube.off" --facet-angle 31 -o "$TMP/x.off"
 expect 2 "--facet-distance" -- mesh "$TMP/cube.off" --facet-distance -1 -o "$TMP/x.off"
 
