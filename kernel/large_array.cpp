@@ -160,6 +160,116 @@ class MidBlockPool {
   std::size_t live_ = 0;
 };
 
+
+// Blocks above kPoolMaxBytes, each its own huge-page-aligned block. A freed one is kept and
+// handed to the next request it fits (the smallest that holds it, at most twice its size) while
+// other large blocks are live: its pages are faulted in already, where a fresh block pays a
+// fault and a clear per huge page, the larger part of the system time of a mesher run at 0.5%
+// of the diagonal. A run frees the sample's arrays and growing vectors' old blocks before it
+// makes the restricted facets' tables, which then take those pages (BENCHMARKS.md, "Session
+// 27"). Kept blocks never exceed the live ones in bytes (so the run's footprint at most
+// doubles, and in practice grows by the blocks nothing reused), and all go back to the system
+// once no large block is live. After fork() the child forgets the parent's blocks, as the pool
+// does, and frees with std::free the ones it inherited.
+class LargeBlockCache {
+ public:
+  static LargeBlockCache& instance() {
+    static auto* cache = new LargeBlockCache;
+    return *cache;
+  }
+
+  /// `bytes` is a multiple of kHugePageBytes.
+  void* allocate(std::size_t bytes) {
+    {
+      const std::lock_guard lock(mutex_);
+      std::size_t best = kept_.size();
+      for (std::size_t i = 0; i < kept_.size(); ++i)
+        if (kept_[i].bytes >= bytes && kept_[i].bytes / 2 <= bytes &&
+            (best == kept_.size() || kept_[i].bytes < kept_[best].bytes))
+          best = i;
+      if (best != kept_.size()) {
+        live_.reserve(live_.size() + 1);  // room first: a throw leaves the lists as they were
+        const Block b = kept_[best];
+        kept_[best] = kept_.back();
+        kept_.pop_back();
+        kept_bytes_ -= b.bytes;
+        live_.push_back(b);
+        live_bytes_ += b.bytes;
+        return b.p;
+      }
+    }
+    void* p = huge_page_block(bytes);
+    try {
+      const std::lock_guard lock(mutex_);
+      live_.push_back({p, bytes});
+      live_bytes_ += bytes;
+    } catch (...) {
+      std::free(p);
+      throw;
+    }
+    return p;
+  }
+
+  std::size_t kept_bytes() noexcept {
+    const std::lock_guard lock(mutex_);
+    return kept_bytes_;
+  }
+
+  void deallocate(void* p) noexcept {
+    std::array<void*, kMaxKept + 1> release{};
+    std::size_t n = 0;
+    {
+      const std::lock_guard lock(mutex_);
+      const auto it = std::find_if(live_.begin(), live_.end(), [p](const Block& b) { return b.p == p; });
+      if (it == live_.end()) {
+        release[n++] = p;  // inherited from the parent before a fork
+      } else {
+        const Block b = *it;
+        *it = live_.back();
+        live_.pop_back();
+        live_bytes_ -= b.bytes;
+        if (live_.empty()) {
+          for (const Block& k : kept_) release[n++] = k.p;
+          kept_.clear();
+          kept_bytes_ = 0;
+          release[n++] = b.p;
+        } else if (kept_.size() < kMaxKept && kept_bytes_ + b.bytes <= live_bytes_) {
+          kept_.push_back(b);
+          kept_bytes_ += b.bytes;
+        } else {
+          release[n++] = b.p;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) std::free(release[i]);
+  }
+
+ private:
+  static constexpr std::size_t kMaxKept = 32;
+  struct Block {
+    void* p;
+    std::size_t bytes;
+  };
+
+  LargeBlockCache() {
+    kept_.reserve(kMaxKept);  // deallocate() never allocates
+#if defined(__unix__)
+    pthread_atfork([] { instance().mutex_.lock(); }, [] { instance().mutex_.unlock(); },
+                   [] {
+                     LargeBlockCache& cache = instance();
+                     cache.mutex_.unlock();
+                     cache.live_.clear();
+                     cache.kept_.clear();
+                     cache.live_bytes_ = cache.kept_bytes_ = 0;
+                   });
+#endif
+  }
+
+  std::mutex mutex_;
+  std::vector<Block> live_, kept_;
+  std::size_t live_bytes_ = 0, kept_bytes_ = 0;
+};
+
 }  // namespace
 
 void* allocate_large(std::size_t bytes) {
@@ -167,7 +277,7 @@ void* allocate_large(std::size_t bytes) {
   if (bytes <= kPoolMaxBytes) return MidBlockPool::instance().allocate(bytes);
   const std::size_t rounded = rounded_to_huge_pages(bytes);
   if (rounded < bytes) throw std::bad_alloc();
-  return huge_page_block(rounded);
+  return kPoolInUse ? LargeBlockCache::instance().allocate(rounded) : huge_page_block(rounded);
 }
 
 void deallocate_large(void* p, std::size_t bytes) noexcept {
@@ -176,9 +286,13 @@ void deallocate_large(void* p, std::size_t bytes) noexcept {
     ::operator delete(p);
   } else if (bytes <= kPoolMaxBytes) {
     MidBlockPool::instance().deallocate(p, bytes);
+  } else if (kPoolInUse) {
+    LargeBlockCache::instance().deallocate(p);
   } else {
     std::free(p);
   }
 }
+
+std::size_t kept_large_bytes() noexcept { return kPoolInUse ? LargeBlockCache::instance().kept_bytes() : 0; }
 
 }  // namespace delpsc::kernel

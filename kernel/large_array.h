@@ -19,6 +19,12 @@
 // parent's chunks would copy them page by page (BENCHMARKS.md, "Session 20: a pool for
 // mid-sized arrays").
 //
+// Freed blocks above 1 MiB are kept and reused (the smallest that fits, at most twice the size
+// asked for) while other such blocks are live, up to as many bytes as are live, and all go back
+// to the system when none is: a mesher run's later tables then take the pages its sample freed
+// instead of faulting in new ones (BENCHMARKS.md, "Session 27"). Not under AddressSanitizer,
+// as the pool.
+//
 // Cost: a pooled block takes the next power of two of its size; a block above 1 MiB is rounded up
 // to a multiple of 2 MiB (at most 2 MiB more per array). Below 4 KiB, operator new as before.
 #pragma once
@@ -29,8 +35,9 @@
 
 namespace delpsc::kernel {
 
-/// Whether the pool is used. Not under AddressSanitizer: blocks carved from one chunk would hide
-/// an overrun of one array into the next, which ASan finds between separate heap blocks.
+/// Whether the pool and the reuse of large blocks are on. Not under AddressSanitizer: blocks
+/// carved from one chunk would hide an overrun of one array into the next, and a reused block a
+/// use after free, which ASan finds between separate heap blocks.
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr bool kPoolInUse = false;
 #elif defined(__has_feature)
@@ -54,6 +61,10 @@ inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 void* allocate_large(std::size_t bytes);
 /// Frees what allocate_large(bytes) returned, with the same `bytes`.
 void deallocate_large(void* p, std::size_t bytes) noexcept;
+
+/// Bytes of freed large blocks kept for reuse now (see the file comment); for tests and
+/// statistics. O(1).
+std::size_t kept_large_bytes() noexcept;
 
 /// A std::allocator whose large blocks go through allocate_large. Stateless: all compare equal.
 template <class T>

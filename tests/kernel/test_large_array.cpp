@@ -152,3 +152,39 @@ TEST_CASE("LargeVector's huge pages, as the kernel reports them") {
   MESSAGE("THP mode: " << (line.empty() ? "unknown" : line) << "; " << (huge.empty() ? "no smaps_rollup" : huge));
   CHECK(v[v.size() - 1] == 1);
 }
+
+// A freed large block serves a later request it fits while other large blocks are live (its
+// pages are faulted in already), never one more than twice smaller, and never two requests at
+// once; all go back once no large block is live.
+TEST_CASE("allocate_large: freed large blocks are reused while others are live") {
+  if (!kernel::kPoolInUse) return;  // AddressSanitizer: no reuse
+  const std::size_t huge = kernel::kHugePageBytes;
+  void* keep = kernel::allocate_large(8 * huge);  // live throughout: blocks are kept
+  auto* a = static_cast<unsigned char*>(kernel::allocate_large(4 * huge));
+  a[0] = 3;
+  kernel::deallocate_large(a, 4 * huge);
+  void* small = kernel::allocate_large(huge);  // a quarter of a's size: a fresh block
+  CHECK(small != a);
+  auto* b = static_cast<unsigned char*>(kernel::allocate_large(3 * huge + 5));  // fits a, not twice smaller
+  CHECK(b == a);
+  void* c = kernel::allocate_large(3 * huge);  // a is taken: a fresh block
+  CHECK(c != a);
+  b[4 * huge - 1] = 1;  // the whole of a's size is usable (rounded up: a request of 4 huge pages)
+  kernel::deallocate_large(c, 3 * huge);
+  kernel::deallocate_large(b, 3 * huge + 5);
+  kernel::deallocate_large(small, huge);
+  CHECK(kernel::kept_large_bytes() == 8 * huge);  // c, b and small: kept, as many bytes as keep's...
+  kernel::deallocate_large(keep, 8 * huge);        // ...until none is live: all released
+  CHECK(kernel::kept_large_bytes() == 0);
+  // Kept blocks never outweigh the live ones: with `one` and `big` live (2 + 4 huge pages) a
+  // freed block of 2 is kept, then with `one` alone `big` is not.
+  void* one = kernel::allocate_large(huge + 1);
+  void* big = kernel::allocate_large(4 * huge);
+  void* mid = kernel::allocate_large(2 * huge);
+  kernel::deallocate_large(mid, 2 * huge);
+  CHECK(kernel::kept_large_bytes() == 2 * huge);
+  kernel::deallocate_large(big, 4 * huge);
+  CHECK(kernel::kept_large_bytes() == 2 * huge);
+  kernel::deallocate_large(one, huge + 1);
+  CHECK(kernel::kept_large_bytes() == 0);
+}
