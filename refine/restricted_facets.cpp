@@ -50,10 +50,10 @@ std::uint32_t RestrictedFacets::new_record() {
 }
 
 void RestrictedFacets::forget(FacetRef& ref) {
-  const std::uint32_t first = ref.slot;
-  const bool live = first != kNoFacet && records_[first].alive && records_[first].stamp == ref.stamp;
-  ref = {};
-  if (live) forget_chain(first);
+  const FacetRef first = ref;
+  ref = kNoFacet;
+  // A dead record: the facet's other side was forgotten first (no slot is reused meanwhile).
+  if (names_record(first) && records_[first].alive) forget_chain(first);
 }
 
 void RestrictedFacets::forget_chain(std::uint32_t first) {
@@ -72,7 +72,7 @@ void RestrictedFacets::forget_record(std::uint32_t s) {
   }
   r.alive = false;
   ++r.stamp;  // invalidates heap entries
-  free_.push_back(s);
+  (updating_ ? free_later_ : free_).push_back(s);
   --live_;
 }
 
@@ -201,7 +201,7 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
     // hits. Where V_t lies is then undecidable in doubles; the facet gets no record and is not
     // trusted, so it is examined again whenever a cavity reaches it (and the flat cell goes).
     const Facet m = dt_->mirror_facet(f);
-    ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
+    ref(f.cell, f.index) = ref(m.cell, m.index) = kUntrusted;
     return;
   }
   // With a proven cover, a point of V_t on the domain is within sqrt(bound - P) of t's
@@ -239,7 +239,7 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   if (hits_.empty()) {
     if (!conditioned) {  // update() must not carry this outcome over
       const Facet m = dt_->mirror_facet(f);
-      ref(f.cell, f.index) = ref(m.cell, m.index) = FacetRef{kNoFacet, kUntrusted};
+      ref(f.cell, f.index) = ref(m.cell, m.index) = kUntrusted;
     }
     return;
   }
@@ -292,10 +292,9 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
     }
   }
   if (first == kNoFacet) return;
-  const FacetRef r{first, records_[first].stamp};
-  ref(f.cell, f.index) = r;
+  ref(f.cell, f.index) = first;
   const Facet m = dt_->mirror_facet(f);
-  ref(m.cell, m.index) = r;
+  ref(m.cell, m.index) = first;
 }
 
 double RestrictedFacets::order_key(double badness, const Vec3& x) const {
@@ -361,7 +360,7 @@ void RestrictedFacets::rebuild(kernel::LargeVector<PointId>& touched, const std:
   // About two restricted facets a vertex on a surface.
   records_.reserve(2 * point_room);
   flat_.assign(cells, kFlatUnknown);
-  facet_refs_.assign(4 * cells, {});
+  facet_refs_.assign(4 * cells, kNoFacet);
   // Which cells are live and finite, in one sequential pass: asking the neighbour itself below
   // was a cache miss per facet (cell ids follow the free list, scattered in space), three
   // quarters of this loop's own time on the cube at 1.87%, for facets the cover then skips
@@ -411,7 +410,8 @@ std::optional<std::uint32_t> RestrictedFacets::carry_over(std::uint32_t first, P
 void RestrictedFacets::update(const delaunay::ChangeSet& changes, kernel::LargeVector<PointId>& touched, PointId inserted) {
   const bool insertion = inserted != delaunay::kNoPoint;
   if (!insertion) cover_power_ = std::numeric_limits<double>::infinity();  // see rebuild()
-  if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity());
+  if (facet_refs_.size() < 4 * dt_->cell_capacity()) facet_refs_.resize(4 * dt_->cell_capacity(), kNoFacet);
+  updating_ = true;
   if (created_mark_.size() < dt_->cell_capacity()) created_mark_.resize(dt_->cell_capacity(), 0);
   // A created cell may reuse a destroyed one's slot: forget what well_conditioned() knew of it.
   if (flat_.size() < dt_->cell_capacity()) flat_.resize(dt_->cell_capacity(), kFlatUnknown);
@@ -433,8 +433,8 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, kernel::LargeV
     for (int i = 0; i < 4; ++i) {
       FacetRef& r = ref(c, i);
       if (insertion) {
-        if (r.slot != kNoFacet) doomed_.push_back(r);
-        r = {};
+        if (names_record(r)) doomed_.push_back(r);
+        r = kNoFacet;
       } else {
         forget(r);
       }
@@ -473,14 +473,13 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, kernel::LargeV
       if (insertion && !n_created) {
         const Facet old = inf == i ? f : m;  // the surviving cell's side
         const FacetRef r = mapped ? boundary_refs_[k] : ref(old.cell, old.index);
-        if (r.slot == kNoFacet && r.stamp != kUntrusted && well_conditioned(f)) {
-          ref(c, i) = {};
+        if (r == kNoFacet && well_conditioned(f)) {
+          ref(c, i) = kNoFacet;
           continue;
         }
-        if (r.slot != kNoFacet && records_[r.slot].alive && records_[r.slot].stamp == r.stamp &&
-            well_conditioned(f)) {
-          if (const auto head = carry_over(r.slot, inserted)) {
-            ref(old.cell, old.index) = ref(c, i) = *head == kNoFacet ? FacetRef{} : FacetRef{*head, records_[*head].stamp};
+        if (names_record(r) && records_[r].alive && well_conditioned(f)) {
+          if (const auto head = carry_over(r, inserted)) {
+            ref(old.cell, old.index) = ref(c, i) = *head;
             continue;
           }
         }
@@ -492,7 +491,10 @@ void RestrictedFacets::update(const delaunay::ChangeSet& changes, kernel::LargeV
     }
   }
   for (FacetRef& r : doomed_)
-    if (r.slot == kNoFacet || records_[r.slot].kept != update_epoch_) forget(r);
+    if (records_[r].kept != update_epoch_) forget(r);
+  free_.insert(free_.end(), free_later_.begin(), free_later_.end());
+  free_later_.clear();
+  updating_ = false;
   touch_changed(touched);
 }
 

@@ -21,7 +21,7 @@
 //
 // Units: size is a length, sqrt(max(0, power distance)), comparable with ball radii and λ.
 // Cost: update is O(cells created + destroyed) facet examinations, each one segment or ray query
-// of the Domain, and no hashing; memory ~100 bytes per restricted facet plus 36 bytes per cell
+// of the Domain, and no hashing; memory ~100 bytes per restricted facet plus 21 bytes per cell
 // slot.
 #pragma once
 
@@ -32,6 +32,7 @@
 #include <optional>
 #include <queue>
 #include <span>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -121,6 +122,11 @@ class RestrictedFacets {
   /// window misses the domain), by rebuild() and then by update().
   std::size_t skipped() const { return skipped_; }
   const RestrictedFacet& operator[](std::uint32_t slot) const { return records_[slot]; }
+  /// Checker of the references from cells to records: every live finite cell's facet holds
+  /// the same reference from both sides, naming a live record of that triangle (or none), and
+  /// every dead cell slot holds none. Returns the first problem, or an empty string.
+  /// O(cells). For tests.
+  std::string refs_consistent() const;
   /// The live records incident to vertex v, all patches.
   std::span<const Incidence> incident(PointId v) const {
     return by_vertex_[v];
@@ -145,13 +151,14 @@ class RestrictedFacets {
   }
 
  private:
-  /// The first record of a facet, as seen from one of its two cells; valid while that record's
-  /// stamp is unchanged (records are recycled, and a surviving neighbour's reference to a
-  /// forgotten record is simply left stale).
-  struct FacetRef {
-    std::uint32_t slot = kNoFacet;
-    std::uint32_t stamp = 0;
-  };
+  /// The first record of a facet, as seen from one of its two cells: its slot, kNoFacet (no
+  /// record), or kUntrusted. Four bytes and no stamp (they were half the restricted facets'
+  /// memory, as large as the cells, at 8): outside update() every reference held by a live cell
+  /// names a live record of that facet, and a dead cell's holds none (refs_consistent() checks
+  /// it). Inside update() a surviving neighbour's reference may name a record just forgotten;
+  /// slots freed there are only reused from the next update() on (free_later_), so such a
+  /// reference names a dead record until the facet is visited, never another facet's.
+  using FacetRef = std::uint32_t;
 
   void forget(FacetRef& ref);
   void forget_chain(std::uint32_t first);
@@ -184,9 +191,11 @@ class RestrictedFacets {
   bool well_conditioned(delaunay::Facet f) const;
   /// worst()'s heap key of a bad record: badness in eighth octaves, then Morton order of x.
   double order_key(double badness, const Vec3& x) const;
-  /// The stamp of a ref without records whose facet's dual met no patch but was computed from
+  /// The reference of a facet without records whose dual met no patch but was computed from
   /// nearly flat cells (see well_conditioned): update() examines it again.
-  static constexpr std::uint32_t kUntrusted = 1;
+  static constexpr FacetRef kUntrusted = kNoFacet - 1;
+  /// Whether a reference names a record (neither kNoFacet nor kUntrusted).
+  static bool names_record(FacetRef r) { return r < kUntrusted; }
   std::uint32_t new_record();
   FacetRef& ref(delaunay::CellId c, int i) { return facet_refs_[4 * std::size_t{c} + static_cast<std::size_t>(i)]; }
 
@@ -195,6 +204,8 @@ class RestrictedFacets {
   kernel::Box3 box_;  // the domain's, for order_key
   kernel::LargeVector<RestrictedFacet> records_;
   kernel::LargeVector<std::uint32_t> free_;
+  kernel::LargeVector<std::uint32_t> free_later_;  // slots forgotten during update(): free at its end
+  bool updating_ = false;
   std::size_t live_ = 0;
   IncidenceLists<Incidence> by_vertex_;
   // Per cell slot, per facet index: its records. Indexing by cell facet instead of hashing the

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include <delpsc/kernel/constructions.h>
 
@@ -77,8 +78,35 @@ std::string describe(const Pair& p, const char* where) {
 
 }  // namespace
 
+std::string RestrictedFacets::refs_consistent() const {
+  const auto at = [&](delaunay::CellId c, int i) {
+    const std::size_t k = 4 * std::size_t{c} + static_cast<std::size_t>(i);
+    return k < facet_refs_.size() ? facet_refs_[k] : kNoFacet;
+  };
+  const auto where = [](delaunay::CellId c, int i) {
+    return "the reference of cell " + std::to_string(c) + ", facet " + std::to_string(i);
+  };
+  for (delaunay::CellId c = 0; c < dt_->cell_capacity(); ++c)
+    for (int i = 0; i < 4; ++i) {
+      const FacetRef r = at(c, i);
+      if (!dt_->is_cell_alive(c)) {
+        if (r != kNoFacet) return where(c, i) + " (a dead cell) is not empty";
+        continue;
+      }
+      if (r != at(dt_->neighbour(c, i), dt_->mirror_index(c, i))) return where(c, i) + " differs from its mirror's";
+      if (!names_record(r)) continue;
+      if (r >= records_.size() || !records_[r].alive) return where(c, i) + " names a dead record";
+      std::array<PointId, 3> t = dt_->facet_vertices(delaunay::Facet{c, i});
+      std::sort(t.begin(), t.end());
+      if (records_[r].vertices != t) return where(c, i) + " names another triangle's record";
+    }
+  return {};
+}
+
 std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangulation& dt, const Domain& domain,
                                                  const RestrictedFacets& kept, std::size_t max_problems) {
+  // The references first: a stale one would make a later update() forget another facet's records.
+  if (const std::string refs = kept.refs_consistent(); !refs.empty()) return {refs};
   RestrictedFacets fresh(dt, domain);
   kernel::LargeVector<PointId> touched;
   fresh.rebuild(touched);

@@ -16,7 +16,8 @@
 
 namespace delpsc::refine {
 
-/// One line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
+/// The first problem of `kept`'s references from cells to records, if any
+/// (RestrictedFacets::refs_consistent), alone; else one line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
 /// against `domain` (at most `max_problems`); empty iff they agree, but for one kind of pair: one
 /// the scan finds whose exact dual edge - on the triangle's line, from every vertex, not from its
 /// two cells - misses the patch. The scan's edge, computed from nearly flat cells, can run where

@@ -5,6 +5,7 @@
 
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <delpsc/io/shapes.h>
@@ -79,8 +80,11 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
   const delaunay::PointId id = dt.insert(WeightedPoint::from(Vec3(0.5, 0.5, 0.0)), &changes);
   REQUIRE(dt.status(id) == delaunay::PointStatus::vertex);
   CHECK_FALSE(refine::check_restricted_facets(dt, domain, facets).empty());
+  // ...and the references of the destroyed cells' slots name records of facets that are gone.
+  CHECK_FALSE(facets.refs_consistent().empty());
   touched.clear();
   facets.update(changes, touched, id);
+  CHECK(facets.refs_consistent().empty());
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
 }
 
@@ -171,6 +175,8 @@ TEST_CASE("rebuild with the initial sample's proven cover skips most queries and
         REQUIRE(dt.remove(v, &changes));
         touched.clear();
         culled.update(changes, touched, delaunay::kNoPoint);
+        const std::string refs = culled.refs_consistent();  // no stale reference left for the next update
+        CHECK_MESSAGE(refs.empty(), refs);
         ++removed;
       }
       REQUIRE(removed > 20);
