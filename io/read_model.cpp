@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include <delpsc/kernel/large_array.h>
 
@@ -46,6 +47,20 @@ kernel::LargeVector<char> read_file(const std::string& path) {
   return bytes;
 }
 
+// A lone '\r' (not followed by '\n') ends a line, as in files from classic Mac OS and some
+// exporters that copied its convention: the line-based text formats see '\n' there instead.
+// Without this a CR-only OFF file was one long line, refused as a bad header at line 1. CRLF is
+// left as it is (the scanners take '\r' for a blank). Empty when there is no lone '\r' (no copy).
+std::string with_lone_cr_as_newline(std::string_view text) {
+  std::size_t cr = text.find('\r');
+  while (cr != std::string_view::npos && cr + 1 < text.size() && text[cr + 1] == '\n') cr = text.find('\r', cr + 2);
+  if (cr == std::string_view::npos) return {};
+  std::string copy(text);
+  for (std::size_t i = cr; i < copy.size(); ++i)
+    if (copy[i] == '\r' && (i + 1 == copy.size() || copy[i + 1] != '\n')) copy[i] = '\n';
+  return copy;
+}
+
 }  // namespace
 
 void check_input_file(const std::string& path, const std::string& what) {
@@ -82,8 +97,10 @@ ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, co
   detail::SoupBuilder builder(name);
   // A UTF-8 byte-order mark, which some Windows editors put before any text: not part of an OFF
   // or OBJ file's content (STL's and PLY's first bytes are their own: a binary header, "ply").
-  if ((format == ModelFormat::off || format == ModelFormat::obj) && bytes.starts_with("\xEF\xBB\xBF"))
-    bytes.remove_prefix(3);
+  const bool line_text = format == ModelFormat::off || format == ModelFormat::obj;
+  if (line_text && bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
+  const std::string normalised = line_text ? with_lone_cr_as_newline(bytes) : std::string();
+  if (!normalised.empty()) bytes = normalised;
   switch (format) {
     case ModelFormat::off: detail::parse_off(bytes, builder); break;
     case ModelFormat::obj: detail::parse_obj(bytes, builder); break;

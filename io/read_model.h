@@ -19,6 +19,8 @@
 //    than 2^32 - 1 vertices, a model without triangles.
 //
 // Format notes (what is accepted beyond the letter of each format):
+//  - OFF and OBJ: a UTF-8 byte-order mark at the start is skipped; lines may end in LF, CRLF or
+//    a lone CR (classic Mac OS), mixed.
 //  - OFF: header keyword [ST][C][N]OFF or none at all (Geomview allows it), counts on the same
 //    line or the next; anything after a vertex's 3 coordinates or a face's indices on the same
 //    line (normals, colours) is ignored; '#' comments. Binary OFF, 4OFF and nOFF are refused.

@@ -137,6 +137,20 @@ TEST_CASE("OFF and OBJ: a UTF-8 byte-order mark before the text is skipped") {
              .empty());
 }
 
+TEST_CASE("OFF and OBJ: lines ended by a lone carriage return (classic Mac OS) read as lines") {
+  std::string cr = kCube;  // its comment line would otherwise run to the end of the file
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  const auto off = read_bytes(cr, io::ModelFormat::off);
+  CHECK(off.soup.triangles.size() == 12);
+  CHECK(off.report.warnings.empty());
+  const auto obj = read_bytes("v 0 0 0\rv 1 0 0\r# c\rv 0 1 0\rf 1 2 3\r", io::ModelFormat::obj);
+  CHECK(obj.soup.triangles.size() == 1);
+  // Errors name the line as an editor shows it; CRLF and lone CRs may mix.
+  const std::string msg =
+      io_error_of([&] { read_bytes("OFF\r\n3 1 0\r0 0 0\r1 x 0\r0 1 0\r3 0 1 2\r", io::ModelFormat::off); });
+  CHECK_MESSAGE(msg.find("line 4") != std::string::npos, msg);
+}
+
 TEST_CASE("OFF: text after the last face is a warning, not an error") {
   const auto r = read_bytes("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n", io::ModelFormat::off);
   CHECK(r.soup.triangles.size() == 1);
