@@ -5,6 +5,7 @@
 #include <delpsc/io/error.h>
 #include <delpsc/io/model_frame.h>
 #include <delpsc/io/read_model.h>
+#include <delpsc/io/unused_vertices.h>
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/self_intersections.h>
@@ -17,8 +18,8 @@
 
 namespace delpsc::app {
 
-/// Reads the model and moves it next to the origin when it lies far from it (exactly; see
-/// io/model_frame.h and model_offset()).
+/// Reads the model, drops the vertices no triangle uses (a warning says how many) and moves it
+/// next to the origin when it lies far from it (exactly; see io/model_frame.h and model_offset()).
 inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g) {
   io::ReadResult result;
   try {
@@ -26,8 +27,13 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
   } catch (const io::Error& e) {
     throw Failure{kBadInput, e.what()};
   }
+  // Before anything takes the model's box (io/unused_vertices.h).
+  const io::UnusedVertices unused = io::drop_unused_vertices(result.soup);
   model_offset() = io::move_near_origin(result.soup.vertices);
   if (!g.quiet) {
+    if (unused.count > 0)
+      std::fprintf(stderr, "delpsc: warning: %s: %zu vertex(es) used by no triangle ignored (the first at (%.6g, %.6g, %.6g))\n",
+                   path.c_str(), unused.count, unused.first_point.x(), unused.first_point.y(), unused.first_point.z());
     for (const auto& w : result.report.warnings)
       std::fprintf(stderr, "delpsc: warning: %s\n", w.c_str());
     if (!result.report.degenerate_triangles.empty())

@@ -7,7 +7,8 @@
 //  - merges exactly duplicated vertices (equal x, y and z as doubles; -0 equals +0) through a hash
 //    on the coordinates, keeping the first occurrence: STL lists every triangle's corners
 //    separately and needs it, the indexed formats get it too so that no format reaches the complex
-//    builder with two copies of a point. Unreferenced vertices stay (harmless);
+//    builder with two copies of a point. Vertices no triangle uses stay (the commands drop them:
+//    unused_vertices.h);
 //  - keeps zero-area triangles (a repeated vertex after merging, or three exactly collinear
 //    vertices, decided by the exact kernel predicate) but lists them in ReadReport, because
 //    whether and how to drop them is the complex builder's decision;

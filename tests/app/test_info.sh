@@ -74,4 +74,15 @@ expect 0 "" -- info "$TMP/cube.off"
 grep -q "meet at only" "$TMP/err" && fail "cube: fold warning: $(cat "$TMP/err")"
 expect 0 "" -- info "$TMP/ell.off"
 [[ "$(value sharpest_fold_degrees)" == "180" ]] || fail "flat sheet: sharpest_fold_degrees=$(value sharpest_fold_degrees)"
+
+# Vertices no triangle uses are dropped with a warning before anything takes the model's box: a
+# stray one at 1e30 set info's bbox, and made the near-contact tolerance 1e21, so that mesh
+# refused the cube as touching itself.
+write_cube "$TMP/cube.off"
+sed '2s/^8 12/10 12/; 10a 1e30 0 0\n0.5 0.5 0.5' "$TMP/cube.off" >"$TMP/stray.off"
+expect 0 "2 vertex(es) used by no triangle ignored (the first at (1e+30, 0, 0))" -- info "$TMP/stray.off"
+[[ "$(value bbox)" == "0 0 0 1 1 1" && "$(value vertices)" == "8" ]] \
+  || fail "stray vertices: bbox=$(value bbox) vertices=$(value vertices)"
+expect 0 "used by no triangle" -- mesh "$TMP/stray.off" --size 20% -o "$TMP/stray.mesh.off" --check
+[[ "$(value g1)" == "true" ]] || fail "stray vertices: g1=$(value g1)"
 finish

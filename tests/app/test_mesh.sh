@@ -353,6 +353,19 @@ def inside(p):  # the part is 4 x 2 x 1.6 from its corner at the offset
     return all(o - 1e-3 <= c <= o + e + 1e-3 for c, o, e in zip(p, (1e9, 2e9, -3e9), (4, 2, 1.6)))
 sys.exit(not (nv > 100 and all(map(inside, xyz)) and centres and all(map(inside, centres))))
 FRAME
+# The same with a dummy vertex at the origin, used by no triangle (some exporters write one): it
+# kept the model's box reaching the origin, so the part was not moved, and was refused as nearly
+# touching itself within 1e-9 of that box's diagonal (3.7 here). Dropped first, it meshes as above.
+python3 - "$TMP/far.off" >"$TMP/far_dummy.off" <<'DUMMY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+nv, nf = map(int, lines[1].split()[:2])
+faces = [" ".join([f.split()[0]] + [str(int(i) + 1) for i in f.split()[1:]]) for f in lines[2 + nv:2 + nv + nf]]
+print("\n".join(["OFF", f"{nv + 1} {nf} 0", "0 0 0"] + lines[2:2 + nv] + faces))
+DUMMY
+expect 0 "1 vertex(es) used by no triangle ignored (the first at (0, 0, 0))" -- mesh "$TMP/far_dummy.off" --size 2% --check -o "$TMP/far_dummy_out.off"
+[[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" ]] \
+  || fail "part moved by 1e9 with a dummy vertex at the origin: g1=$(value g1) topology_ok=$(value topology_ok)"
 # STL keeps floats: 24 bits cannot hold the part's triangles 1e9 away, and the command says so.
 expect 0 "triangles have no area once rounded to them" -- mesh "$TMP/far.off" --size 10% -o "$TMP/far.stl"
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/near.stl"
