@@ -27,6 +27,8 @@
 #include <delpsc/refine/protected_balls.h>
 #include <delpsc/refine/triangle_orientation.h>
 
+#include "mesh_pipeline.h"
+
 using namespace delpsc;
 
 namespace {
@@ -122,17 +124,7 @@ void candidates(benchmark::State& state, const Model& m, double scale) {
 // ends each iteration there. At coarse sizes these fixed costs are a quarter of fandisk's time.
 void pipeline(benchmark::State& state, const Model& m, double relative) {
   std::size_t vertices = 0;
-  for (auto _ : state) {
-    const refine::PolygonDomain domain(protect::build_complex(m.make()));
-    const double lambda = relative * domain.bounding_box().diagonal();
-    protect::BallSet set = protect::protect(domain.complex(), lambda);
-    refine::ProtectedBalls balls(set);
-    refine::MesherOptions options;
-    options.facet_size = lambda;
-    refine::Mesher mesher(domain, balls, options);
-    mesher.run();
-    vertices = mesher.output().vertices.size();
-  }
+  for (auto _ : state) vertices = bench::mesh_end_to_end(m.make(), relative);
   state.counters["vertices"] = static_cast<double>(vertices);
   state.counters["vertices_per_s"] =
       benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
