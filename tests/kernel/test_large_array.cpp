@@ -188,3 +188,35 @@ TEST_CASE("allocate_large: freed large blocks are reused while others are live")
   kernel::deallocate_large(one, huge + 1);
   CHECK(kernel::kept_large_bytes() == 0);
 }
+
+// A forked child forgets the parent's kept large blocks (writing into them would copy them page
+// by page) and frees the large blocks it inherited with the system's free, not into its own cache.
+TEST_CASE("allocate_large: a forked child starts with no kept large blocks") {
+  if (!kernel::kPoolInUse) return;  // AddressSanitizer: no reuse
+  const std::size_t huge = kernel::kHugePageBytes;
+  auto* inherited = static_cast<unsigned char*>(kernel::allocate_large(4 * huge));  // live in both
+  inherited[0] = 7;
+  void* kept = kernel::allocate_large(2 * huge);
+  kernel::deallocate_large(kept, 2 * huge);
+  REQUIRE(kernel::kept_large_bytes() == 2 * huge);
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    int status = 0;
+    if (kernel::kept_large_bytes() != 0) status |= 1;
+    void* mine = kernel::allocate_large(2 * huge);
+    if (mine == kept) status |= 2;            // took the parent's kept block
+    if (inherited[0] != 7) status |= 4;       // the inherited block is intact
+    kernel::deallocate_large(inherited, 4 * huge);  // not the child's: freed, not kept
+    if (kernel::kept_large_bytes() != 0) status |= 8;
+    kernel::deallocate_large(mine, 2 * huge);
+    _exit(status);
+  }
+  int status = -1;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(kernel::kept_large_bytes() == 2 * huge);  // the parent's cache is its own
+  kernel::deallocate_large(inherited, 4 * huge);
+  CHECK(kernel::kept_large_bytes() == 0);
+}
