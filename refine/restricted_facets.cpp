@@ -177,11 +177,14 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   constexpr double kCoverMargin = 1.01, kShapeFloor = 1e-6;
   if (cover_power < HUGE_VAL) {
     const WeightedPoint &a = dt_->point(v[0]), &b = dt_->point(v[1]), &c = dt_->point(v[2]);
-    const auto least_power = [](const WeightedPoint& x, const WeightedPoint& y) {
+    // The least power on the radical plane of x and y is m² / (4 d²) - w_x; compared with the
+    // bound without dividing (two vertices never coincide: d² > 0).
+    const double bound = kCoverMargin * cover_power;
+    const auto beyond = [bound](const WeightedPoint& x, const WeightedPoint& y) {
       const double d2 = (x.point() - y.point()).squaredNorm(), m = d2 + x.w - y.w;
-      return d2 > 0 ? m * m / (4 * d2) - x.w : -HUGE_VAL;  // two vertices never coincide
+      return d2 > 0 && m * m > 4 * d2 * (bound + x.w);
     };
-    if (std::max({least_power(a, b), least_power(a, c), least_power(b, c)}) > kCoverMargin * cover_power) {
+    if (beyond(a, b) || beyond(a, c) || beyond(b, c)) {
       ++skipped_;
       return;
     }
@@ -372,7 +375,16 @@ void RestrictedFacets::rebuild(kernel::LargeVector<PointId>& touched, const std:
     // finite cell); facets through the infinite vertex have no dual edge.
     if (tick && (c & 0xffff) == 0xffff) tick();
     if (!finite[c]) continue;
+    // The cell's excluded vertices, by index: every facet but the one opposite such a vertex
+    // has it, and examine() would only find that out (on a convex model a third of the facets
+    // are the frame's).
+    unsigned excluded_at = 0;
     for (int i = 0; i < 4; ++i) {
+      const PointId v = dt_->vertex(c, i);
+      if (v < excluded_.size() && excluded_[v]) excluded_at |= 1u << i;
+    }
+    for (int i = 0; i < 4; ++i) {
+      if ((excluded_at & ~(1u << i)) != 0) continue;
       const CellId other = dt_->neighbour(c, i);
       if (other < c && finite[other]) continue;
       examine(Facet{c, i}, cover_power);
