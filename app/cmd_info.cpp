@@ -45,6 +45,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("vertices", soup.vertices.size());
   report("triangles", soup.triangles.size());
   report("merged_vertices", model.report.merged_vertices);
+  report("unused_vertices", model.report.unused_vertices);  // dropped, with a warning (load_model)
   report("zero_area_triangles", model.report.degenerate_triangles.size());
   report("boundary_edges", boundary);
   report("non_manifold_edges", non_manifold);
@@ -82,7 +83,8 @@ Runner register_info(CLI::App& app) {
   app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
       ->check(range_not_nan(0.0, 180.0));
   app.footer(
-      "Prints key=value lines: format, vertices, triangles, merged_vertices, "
+      "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
+      "unused_vertices (used by no triangle: dropped), "
       "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
       "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings.\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };

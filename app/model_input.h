@@ -29,6 +29,7 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
   }
   // Before anything takes the model's box (io/unused_vertices.h).
   const io::UnusedVertices unused = io::drop_unused_vertices(result.soup);
+  result.report.unused_vertices = unused.count;
   model_offset() = io::move_near_origin(result.soup.vertices);
   if (!g.quiet) {
     if (unused.count > 0)

@@ -66,6 +66,9 @@ struct ReadReport {
   std::size_t polygons = 0;
   /// Indices into TriangleSoup::triangles of the zero-area triangles, increasing.
   std::vector<std::uint32_t> degenerate_triangles;
+  /// Vertices no triangle uses, once dropped (io/unused_vertices.h; the readers keep them and
+  /// leave this 0, the commands drop them and count them here).
+  std::size_t unused_vertices = 0;
   std::vector<std::string> warnings;
 };
 

@@ -8,6 +8,7 @@ printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 0\n3 0 1 2\n3 4 2 3\n3 1 1 2
 expect 0 "zero-area" -- info "$TMP/sheet.off"
 [[ "$(value triangles)" == "3" ]] || fail "triangles: $(value triangles)"
 [[ "$(value merged_vertices)" == "1" ]] || fail "merged_vertices: $(value merged_vertices)"
+[[ "$(value unused_vertices)" == "0" ]] || fail "unused_vertices: $(value unused_vertices)"
 [[ "$(value zero_area_triangles)" == "1" ]] || fail "zero_area_triangles: $(value zero_area_triangles)"
 [[ "$(value boundary_edges)" == "4" ]] || fail "boundary_edges: $(value boundary_edges)"
 [[ "$(value bbox)" == "0 0 0 1 1 0" ]] || fail "bbox: $(value bbox)"
@@ -81,8 +82,8 @@ expect 0 "" -- info "$TMP/ell.off"
 write_cube "$TMP/cube.off"
 sed '2s/^8 12/10 12/; 10a 1e30 0 0\n0.5 0.5 0.5' "$TMP/cube.off" >"$TMP/stray.off"
 expect 0 "2 vertex(es) used by no triangle ignored (the first at (1e+30, 0, 0))" -- info "$TMP/stray.off"
-[[ "$(value bbox)" == "0 0 0 1 1 1" && "$(value vertices)" == "8" ]] \
-  || fail "stray vertices: bbox=$(value bbox) vertices=$(value vertices)"
+[[ "$(value bbox)" == "0 0 0 1 1 1" && "$(value vertices)" == "8" && "$(value unused_vertices)" == "2" ]] \
+  || fail "stray vertices: bbox=$(value bbox) vertices=$(value vertices) unused_vertices=$(value unused_vertices)"
 expect 0 "used by no triangle" -- mesh "$TMP/stray.off" --size 20% -o "$TMP/stray.mesh.off" --check
 [[ "$(value g1)" == "true" ]] || fail "stray vertices: g1=$(value g1)"
 finish
