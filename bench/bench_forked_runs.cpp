@@ -47,7 +47,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string path = argv[1];
-  const double percent = std::atof(argv[2]);
+  char* end = nullptr;
+  const double percent = std::strtod(argv[2], &end);
+  // A size of 0 or garbage (atof's 0) would ask the mesher for nothing it can finish.
+  if (end == argv[2] || *end != '\0' || !(percent > 0 && percent <= 100)) {
+    std::fprintf(stderr, "%s: SIZE_PERCENT must be a number in (0, 100], got '%s'\n", argv[0], argv[2]);
+    return 2;
+  }
   const int runs = argc > 3 ? std::max(1, std::atoi(argv[3])) : 5;
   std::vector<double> total, system;
   for (int run = 0; run < runs; ++run) {
