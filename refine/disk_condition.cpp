@@ -72,10 +72,10 @@ bool DiskCondition::on_patch(PointId q, std::uint32_t patch) const {
   return std::find(patches.begin(), patches.end(), patch) != patches.end();
 }
 
-DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) const {
+DiskVerdict DiskCondition::check(PointId p, std::span<const Incidence> incident) const {
   thread_local std::vector<std::pair<std::uint32_t, bool>> patches;
   patches_of(p, patches);
-  const bool p_is_ball = (*places_)[p].kind == VertexPlace::Kind::ball;
+  const bool p_is_ball = p < places_->size() && (*places_)[p].kind == VertexPlace::Kind::ball;
   DiskVerdict late;  // first D3/D4 failure, reported if no D1/D2 failure is found
   // Scratch kept between calls: check runs after every insertion for each touched vertex, and
   // five allocations per call showed in profiles (malloc/free ~3% of meshing).
@@ -84,7 +84,7 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   for (const auto& [sigma, interior] : patches) {
     link.clear();
     link_facet.clear();
-    for (const Incidence& x : facets.incident(p)) {
+    for (const Incidence& x : incident) {
       if (x.patch != sigma) continue;
       link.push_back(x.link);
       link_facet.push_back(x.slot);
@@ -115,7 +115,7 @@ DiskVerdict DiskCondition::check(PointId p, const RestrictedFacets& facets) cons
   // failure of its vertices that lie in σ, if any; reporting it at p too covers a triangle none
   // of whose vertices lie in σ (seen on a rotated box with a fin at 4%).
   if (late.failure == DiskFailure::none)
-    for (const Incidence& x : facets.incident(p)) {
+    for (const Incidence& x : incident) {
       if (std::none_of(patches.begin(), patches.end(), [&](const auto& e) { return e.first == x.patch; }))
         return {DiskFailure::d4, x.patch, x.slot};
     }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <delpsc/kernel/large_array.h>
@@ -55,8 +56,10 @@ class DiskCondition {
   /// Whether vertex q lies on patch σ (for D4).
   bool on_patch(PointId q, std::uint32_t patch) const;
   /// The first failure found at p, D1/D2 reported before D3/D4; none for a point outside the
-  /// domain.
-  DiskVerdict check(PointId p, const RestrictedFacets& facets) const;
+  /// domain. `incident`: every restricted facet with vertex p (RestrictedFacets::incident(p)),
+  /// each with its patch and the two other vertices; any order.
+  DiskVerdict check(PointId p, std::span<const Incidence> incident) const;
+  DiskVerdict check(PointId p, const RestrictedFacets& facets) const { return check(p, facets.incident(p)); }
 
  private:
   const Domain* domain_;
