@@ -7,6 +7,8 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/ball_checker.h>
 
+#include "support/problem_lines.h"
+
 using namespace delpsc;
 using protect::BallId;
 using protect::BallSet;
@@ -56,8 +58,7 @@ TEST_CASE("checker: the hand-made good set passes") {
   REQUIRE(square().curve_count() == 4);
   REQUIRE(square().corner_count() == 4);
   const protect::BallCheck check = protect::check_balls(good_set());
-  for (const auto& p : check.problems) INFO(p);
-  CHECK(check.ok());
+  CHECK_MESSAGE(check.ok(), test::problem_lines(check.problems));
   CHECK(check.problems.empty());
 }
 
@@ -171,8 +172,7 @@ TEST_CASE("checker: C3 itself, counted apart: a thin loop whose two sides face e
   BallId after = kNoBall;
   for (int k = 1; k <= 14; ++k) after = balls.insert_interior(0, after, loop.curves[0].length * k / 15, 0.12);
   const protect::BallCheck thin = protect::check_balls(balls);
-  for (const auto& p : thin.problems) INFO(p);
-  CHECK(thin.ok());
+  CHECK_MESSAGE(thin.ok(), test::problem_lines(thin.problems));
   CHECK(thin.c3 > 0);
   // The hand-made set on the square, whose sides are 1 apart, has none.
   CHECK(protect::check_balls(good_set()).c3 == 0);

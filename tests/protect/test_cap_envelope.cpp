@@ -13,6 +13,8 @@
 #include <delpsc/protect/protect.h>
 #include <delpsc/protect/protect_engine.h>
 
+#include "support/problem_lines.h"
+
 using namespace delpsc;
 using protect::BallId;
 using protect::BallSet;
@@ -91,6 +93,5 @@ TEST_CASE("RefineBall of a run of mixed radii: each part covered at its own ball
   CHECK(made_largest > 4 * (7.0 / 24) * smallest);
   protect::detail::separate(engine, made);
   const protect::BallCheck check = protect::check_balls(balls);
-  for (const auto& p : check.problems) INFO(p);
-  CHECK(check.ok());
+  CHECK_MESSAGE(check.ok(), test::problem_lines(check.problems));
 }

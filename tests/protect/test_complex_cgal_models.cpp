@@ -17,6 +17,7 @@
 #include <delpsc/protect/complex.h>
 
 #include "support/complex_checks.h"
+#include "support/problem_lines.h"
 
 using namespace delpsc;
 using protect::build_complex;
@@ -102,8 +103,7 @@ TEST_CASE("libcgal-demo models: consistent incidences, counts stable under renum
     CAPTURE(model);
     const Complex c = build_complex(*soup);
     const auto problems = test::complex_problems(c);
-    for (const auto& p : problems) INFO(p);
-    CHECK(problems.empty());
+    CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
     const Summary s = summarize(c);
     MESSAGE(std::string(name) << ": " << describe(s));
     CHECK(s.patches >= 1);

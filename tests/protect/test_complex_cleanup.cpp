@@ -14,6 +14,7 @@
 #include <delpsc/protect/complex.h>
 
 #include "support/complex_checks.h"
+#include "support/problem_lines.h"
 
 using namespace delpsc;
 using protect::build_complex;
@@ -70,8 +71,7 @@ void check_same_complex(const Complex& got, const Complex& want) {
   CHECK(got.patch_count() == want.patch_count());
   CHECK(test::patch_topologies(got) == test::patch_topologies(want));
   const auto problems = test::complex_problems(got);
-  for (const auto& p : problems) INFO(p);
-  CHECK(problems.empty());
+  CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
 }
 
 }  // namespace
@@ -328,8 +328,7 @@ TEST_CASE("random soups with every kind of defect build a consistent complex") {
     o.corner_angle_degrees = static_cast<double>(rng() % 200);
     const Complex c = build_complex(s, o);
     const auto problems = test::complex_problems(c);
-    for (const auto& p : problems) INFO(p);
-    CHECK(problems.empty());
+    CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
     CHECK(c.triangles.size() + c.cleanup.zero_area_triangles.size() == s.triangles.size() + c.cleanup.split_triangles);
     for (const auto& t : c.triangles)
       CHECK_FALSE(kernel::collinear(c.vertices[t[0]].data(), c.vertices[t[1]].data(), c.vertices[t[2]].data()));

@@ -14,6 +14,7 @@
 #include <delpsc/protect/complex_mesh.h>
 
 #include "support/complex_checks.h"
+#include "support/problem_lines.h"
 
 using namespace delpsc;
 using protect::build_complex;
@@ -34,8 +35,7 @@ void check_counts(const Complex& c, const Counts& want) {
   CHECK(c.patch_count() == want.patches);
   CHECK(c.patches_without_boundary() == want.without_boundary);
   const auto problems = test::complex_problems(c);
-  for (const auto& p : problems) INFO(p);
-  CHECK(problems.empty());
+  CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
   CHECK(c.cleanup.zero_area_triangles.empty());
 }
 

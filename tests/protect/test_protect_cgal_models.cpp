@@ -12,6 +12,8 @@
 #include <delpsc/protect/ball_checker.h>
 #include <delpsc/protect/protect.h>
 
+#include "support/problem_lines.h"
+
 using namespace delpsc;
 
 namespace {
@@ -30,8 +32,7 @@ std::optional<io::TriangleSoup> load(const char* name) {
 
 void require_valid(const protect::BallSet& balls) {
   const protect::BallCheck check = protect::check_balls(balls);
-  for (const auto& p : check.problems) INFO(p);
-  CHECK(check.ok());
+  CHECK_MESSAGE(check.ok(), test::problem_lines(check.problems));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <delpsc/protect/complex.h>
 
 #include "support/complex_checks.h"
+#include "support/problem_lines.h"
 
 using namespace delpsc;
 using Topologies = std::vector<std::pair<int, int>>;
@@ -41,8 +42,7 @@ TEST_CASE("sample part: 16 corners, 20 curves, 9 patches with the topology of th
     CHECK(c.cleanup.zero_area_triangles.empty());
     CHECK(c.cleanup.welded_vertices == 0);  // welded by the generator already
     const auto problems = test::complex_problems(c);
-    for (const auto& p : problems) INFO(p);
-    CHECK(problems.empty());
+    CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
     CHECK(c.corner_count() == 16);
     CHECK(c.curve_count() == 20);
     CHECK(c.closed_curve_count() == 4);

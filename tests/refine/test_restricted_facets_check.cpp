@@ -15,6 +15,7 @@
 #include <delpsc/refine/restricted_facets_check.h>
 
 #include "support/generators.h"
+#include "support/problem_lines.h"
 
 using namespace delpsc;
 
@@ -50,8 +51,7 @@ void insert_and_follow(delaunay::RegularTriangulation& dt, const refine::Domain&
     facets.update(changes, touched, id);
     if (check_every > 0 && i % check_every == 0) {
       const auto problems = refine::check_restricted_facets(dt, domain, facets);
-      for (const auto& p : problems) INFO(p);
-      CHECK(problems.empty());
+      CHECK_MESSAGE(problems.empty(), test::problem_lines(problems));
     }
   }
 }
