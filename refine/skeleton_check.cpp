@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <span>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -108,21 +111,76 @@ std::pair<int, std::size_t> cut_open_topology(const io::SurfaceMesh& mesh, const
   return {euler, components(boundary)};
 }
 
+// Whether every label and index of the mesh names something that exists: one patch label per
+// triangle and one curve label per edge, each a patch or curve of the domain, and vertex
+// indices below the vertex count. A triangle labelled with no patch would otherwise belong to
+// no Skl²|σ checked below and pass unseen. Reports through `problem`.
+template <class Report>
+bool mesh_labels_in_range(const io::SurfaceMesh& mesh, const Domain& domain, const Report& problem) {
+  bool ok = true;
+  const auto fail = [&](const std::string& what) {
+    problem(what);
+    ok = false;
+  };
+  if (mesh.triangle_patch.size() != mesh.triangles.size())
+    fail(std::to_string(mesh.triangle_patch.size()) + " patch labels for " + std::to_string(mesh.triangles.size()) + " triangles");
+  if (mesh.edge_curve.size() != mesh.edges.size())
+    fail(std::to_string(mesh.edge_curve.size()) + " curve labels for " + std::to_string(mesh.edges.size()) + " edges");
+  if (!ok) return false;
+  const std::size_t n = mesh.vertices.size();
+  const auto in_range = [n](std::span<const std::uint32_t> ids) {
+    return std::all_of(ids.begin(), ids.end(), [n](std::uint32_t v) { return v < n; });
+  };
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::int32_t p = mesh.triangle_patch[t];
+    if (p < 0 || static_cast<std::uint32_t>(p) >= domain.patch_count())
+      fail("triangle " + std::to_string(t) + " is labelled " + std::to_string(p) + ", not a patch of the domain");
+    if (!in_range(mesh.triangles[t])) fail("triangle " + std::to_string(t) + " has a vertex index out of range");
+  }
+  for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+    const std::int32_t c = mesh.edge_curve[i];
+    if (c < 0 || static_cast<std::uint32_t>(c) >= domain.curve_count())
+      fail("edge " + std::to_string(i) + " is labelled " + std::to_string(c) + ", not a curve of the domain");
+    if (!in_range(mesh.edges[i])) fail("edge " + std::to_string(i) + " has a vertex index out of range");
+  }
+  if (!in_range(mesh.corners)) fail("a corner index is out of range");
+  return ok;
+}
+
 }  // namespace
 
 SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance) {
   SkeletonReport report;
-  auto problem = [&](std::uint32_t patch, const std::string& what) {
-    if (report.problems.size() < 50) report.problems.push_back("patch " + std::to_string(patch) + ": " + what);
+  const auto general = [&](const std::string& what) {
+    if (report.problems.size() < 50) report.problems.push_back(what);
   };
+  auto problem = [&](std::uint32_t patch, const std::string& what) { general("patch " + std::to_string(patch) + ": " + what); };
+  if (!mesh_labels_in_range(mesh, domain, general)) return report;  // the rest would read out of bounds
+  // Skl¹ and Skl⁰ on the complex: each feature edge's ends on its curve (ball centres lie on
+  // their curves, §2.1), each corner vertex at a corner of the domain.
+  for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+    const auto c = static_cast<std::uint32_t>(mesh.edge_curve[i]);
+    for (const std::uint32_t v : mesh.edges[i]) {
+      const Vec3& x = mesh.vertices[v];
+      const double off = (domain.curve_point(c, domain.curve_closest_parameter(c, x)) - x).norm();
+      if (!(off <= tolerance))
+        general("vertex " + std::to_string(v) + " of an edge of curve " + std::to_string(c) + " is " +
+                std::to_string(off) + " off that curve");
+    }
+  }
+  for (const std::uint32_t v : mesh.corners) {
+    double nearest = HUGE_VAL;
+    for (std::uint32_t k = 0; k < domain.corner_count(); ++k)
+      nearest = std::min(nearest, (domain.corner_point(k) - mesh.vertices[v]).norm());
+    if (!(nearest <= tolerance)) general("corner vertex " + std::to_string(v) + " is at no corner of the domain");
+  }
   Array<std::uint32_t> on_curve;  // vertices of feature edges, sorted
   for (const auto& e : mesh.edges) on_curve.push_back(e[0]), on_curve.push_back(e[1]);
   std::sort(on_curve.begin(), on_curve.end());
   // Each patch's triangles, in mesh order.
   std::vector<Array<std::size_t>> by_patch(domain.patch_count());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::int32_t p = mesh.triangle_patch[t];
-    if (p >= 0 && static_cast<std::uint32_t>(p) < by_patch.size()) by_patch[static_cast<std::size_t>(p)].push_back(t);
+    by_patch[static_cast<std::size_t>(mesh.triangle_patch[t])].push_back(t);  // in range, checked above
   }
   Array<Edge> edges, boundary, expected, slit;
   Array<std::array<std::uint32_t, 2>> fan;  // a vertex's link, as link_shape.h takes it

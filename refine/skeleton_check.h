@@ -4,10 +4,14 @@
 // boundary is exactly the chain of ball centres along σ's boundary curves (the mesh's feature
 // edges of the curves bounding σ once; a curve with σ on both sides, a slit, must be interior),
 // with every vertex on the domain near σ. Also per patch the Euler characteristic and the number
-// of boundary loops (for G2 against the input's).
+// of boundary loops (for G2 against the input's). Before that, the mesh itself: one patch label
+// per triangle and one curve label per edge, each naming a patch or curve of the domain, every
+// index a vertex (otherwise nothing else is checked); each feature edge's ends on its curve and
+// each corner vertex at a corner of the domain.
 //
 // Independent of the mesher's data structures: it reads only the SurfaceMesh and the Domain.
-// Cost O(T log T) plus one closest-point query per vertex.
+// Cost O(T log T) plus one closest-point query per vertex, plus O(K) per feature-edge end for a
+// curve of K polyline segments and O(C) per corner vertex for C corners.
 #pragma once
 
 #include <cstdint>

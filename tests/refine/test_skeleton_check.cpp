@@ -164,3 +164,58 @@ TEST_CASE("skeleton check: holes, pinched fans and vertices off the model are re
     CHECK(mentions(report, "is not on a boundary curve"));
   }
 }
+
+TEST_CASE("skeleton check: labels out of range, and curve or corner vertices off the complex") {
+  const refine::PolygonDomain domain(io::make_cube(2));
+  const io::SurfaceMesh good = protect::to_surface_mesh(domain.complex());
+  REQUIRE(refine::check_skeleton(good, domain, tolerance(domain)).ok());
+  REQUIRE(!good.edges.empty());
+  REQUIRE(!good.corners.empty());
+  const auto problems_of = [&](const io::SurfaceMesh& mesh) {
+    const refine::SkeletonReport report = refine::check_skeleton(mesh, domain, tolerance(domain));
+    std::string text;
+    for (const std::string& p : report.problems) text += p + "\n";
+    return text;
+  };
+  // A triangle far off the cube labelled with no patch: it belonged to no Skl²|σ and passed.
+  for (const std::int32_t label : {999, -1}) {
+    CAPTURE(label);
+    io::SurfaceMesh mesh = good;
+    const auto n = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.push_back(Vec3(5, 5, 5));
+    mesh.triangles.push_back({0, 1, n});
+    mesh.triangle_patch.push_back(label);
+    CHECK(problems_of(mesh).find("not a patch of the domain") != std::string::npos);
+  }
+  {
+    io::SurfaceMesh mesh = good;
+    mesh.triangle_patch.pop_back();
+    CHECK(problems_of(mesh).find("patch labels for") != std::string::npos);
+  }
+  {
+    io::SurfaceMesh mesh = good;
+    mesh.edge_curve[0] = static_cast<std::int32_t>(domain.curve_count());
+    CHECK(problems_of(mesh).find("not a curve of the domain") != std::string::npos);
+  }
+  {
+    io::SurfaceMesh mesh = good;
+    mesh.triangles[0][1] = static_cast<std::uint32_t>(mesh.vertices.size());
+    CHECK(problems_of(mesh).find("vertex index out of range") != std::string::npos);
+  }
+  {
+    // An edge given to a curve it does not lie on (the cube's curves are its 12 edges, and no
+    // two share both ends).
+    io::SurfaceMesh mesh = good;
+    const std::int32_t other = (mesh.edge_curve[0] + 1) % static_cast<std::int32_t>(domain.curve_count());
+    mesh.edge_curve[0] = other;
+    CHECK(problems_of(mesh).find("off that curve") != std::string::npos);
+  }
+  {
+    // A corner vertex that is no corner: the centre of triangle 0, added as a vertex.
+    io::SurfaceMesh mesh = good;
+    const auto& t = mesh.triangles[0];
+    mesh.vertices.push_back((mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3);
+    mesh.corners.push_back(static_cast<std::uint32_t>(mesh.vertices.size() - 1));
+    CHECK(problems_of(mesh).find("at no corner") != std::string::npos);
+  }
+}
