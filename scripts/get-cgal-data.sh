@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fetches the polygon models of Debian's libcgal-demo package (fandisk, part, anchor, joint,
 # elephant, ...) into data/cgal-demo/, which is gitignored: the models are CGAL's, not ours, and
-# are only read by tests (tests/protect/test_complex_cgal_models.cpp skips them when absent).
+# are only read by tests and benchmarks (a test missing one fails unless
+# DELPSC_ALLOW_MISSING_CGAL_DATA is set: tests/support/cgal_demo_data.h).
 #
 # Uses `apt-get download` (no root needed, nothing installed) into a temporary directory, then
 # takes data/meshes/*.off out of usr/share/doc/libcgal-dev/data.tar.gz inside the package.

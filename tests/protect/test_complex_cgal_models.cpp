@@ -1,13 +1,12 @@
 // The complex of real models from Debian's libcgal-demo (fandisk, part, anchor, joint,
-// elephant), fetched by scripts/get-cgal-data.sh into data/cgal-demo/; skipped with a message
-// when they are absent. Checked: incidences consistent with the mesh; counts stable under
+// elephant), fetched by scripts/get-cgal-data.sh into data/cgal-demo/ (absent: see
+// tests/support/cgal_demo_data.h). Checked: incidences consistent with the mesh; counts stable under
 // renumbering of vertices and triangles, rotation of each triangle's corners and reversal of the
 // orientation; and, with features off, one patch per closed surface whose Euler characteristic
 // is V - E + F counted independently here.
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <numeric>
 #include <random>
 #include <set>
@@ -18,6 +17,7 @@
 
 #include "support/complex_checks.h"
 #include "support/problem_lines.h"
+#include "support/cgal_demo_data.h"
 
 using namespace delpsc;
 using protect::build_complex;
@@ -25,14 +25,9 @@ using protect::Complex;
 
 namespace {
 
-const std::filesystem::path kDataDir = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
 const char* const kModels[] = {"fandisk", "part", "anchor", "joint", "elephant"};
 
-std::optional<io::TriangleSoup> load(const char* name) {
-  const auto path = kDataDir / (std::string(name) + ".off");
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  return io::read_model(path.string()).soup;
-}
+std::optional<io::TriangleSoup> load(const char* name) { return test::cgal_demo_soup(name); }
 
 struct Summary {
   std::size_t corners, curves, closed, patches, without_boundary;
@@ -95,10 +90,7 @@ io::TriangleSoup shuffled(const io::TriangleSoup& s, std::uint64_t seed, bool re
 TEST_CASE("libcgal-demo models: consistent incidences, counts stable under renumbering") {
   for (const char* name : kModels) {
     const auto soup = load(name);
-    if (!soup) {
-      MESSAGE(std::string(name) << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
-      continue;
-    }
+    if (!soup) continue;
     const std::string model = name;
     CAPTURE(model);
     const Complex c = build_complex(*soup);

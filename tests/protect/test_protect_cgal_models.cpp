@@ -1,10 +1,9 @@
 // Protect on real models from Debian's libcgal-demo (fandisk, part, anchor, joint, elephant),
-// fetched by scripts/get-cgal-data.sh into data/cgal-demo/; skipped with a message when absent.
+// fetched by scripts/get-cgal-data.sh into data/cgal-demo/ (absent: see tests/support/cgal_demo_data.h).
 // At λ = 4%, 1% and 0.25% of the diagonal: terminates, passes the checker, radii at most λ; and
 // the mesher's pattern, refining the largest ball repeatedly, keeps the conditions.
 #include <doctest/doctest.h>
 
-#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -13,22 +12,15 @@
 #include <delpsc/protect/protect.h>
 
 #include "support/problem_lines.h"
+#include "support/cgal_demo_data.h"
 
 using namespace delpsc;
 
 namespace {
 
-const std::filesystem::path kDataDir = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
 const char* const kModels[] = {"fandisk", "part", "anchor", "joint", "elephant"};
 
-std::optional<io::TriangleSoup> load(const char* name) {
-  const auto path = kDataDir / (std::string(name) + ".off");
-  if (!std::filesystem::exists(path)) {
-    MESSAGE(std::string(name) << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
-    return std::nullopt;
-  }
-  return io::read_model(path.string()).soup;
-}
+std::optional<io::TriangleSoup> load(const char* name) { return test::cgal_demo_soup(name); }
 
 void require_valid(const protect::BallSet& balls) {
   const protect::BallCheck check = protect::check_balls(balls);

@@ -7,7 +7,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <limits>
 #include <optional>
 #include <random>
@@ -18,6 +17,8 @@
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/protect/self_intersections.h>
+
+#include "support/cgal_demo_data.h"
 
 using namespace delpsc;
 using protect::triangles_intersect_improperly;
@@ -107,15 +108,9 @@ TEST_CASE("clean models have none, the non-manifold ones included") {
   CHECK(self_intersections(io::make_wedge(1)) == 0);
   CHECK(self_intersections(io::make_crossed_ridges(0.001)) == 0);
   CHECK(self_intersections(io::make_sample_part()) == 0);
-  const std::filesystem::path data = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
   for (const char* name : {"fandisk", "part", "anchor", "joint", "elephant"}) {
-    const std::filesystem::path file = data / (std::string(name) + ".off");
-    if (!std::filesystem::exists(file)) {
-      MESSAGE(file << " absent (scripts/get-cgal-data.sh): not checked");
-      continue;
-    }
     CAPTURE(name);
-    CHECK(self_intersections(io::read_model(file.string()).soup) == 0);
+    if (const auto soup = test::cgal_demo_soup(name)) CHECK(self_intersections(*soup) == 0);
   }
 }
 

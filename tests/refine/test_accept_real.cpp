@@ -1,7 +1,7 @@
 // Issue 6's acceptance on the CAD and scanned models of Debian's libcgal-demo at 1% and 0.5% of
 // the diagonal (4% is in test_mesher_features.cpp): termination, G1, G2 per patch and for the
 // whole output (tests/support/acceptance.h). The files are fetched by scripts/get-cgal-data.sh
-// into data/cgal-demo/; a model that is absent is skipped with a message.
+// into data/cgal-demo/; an absent model fails the test unless DELPSC_ALLOW_MISSING_CGAL_DATA is set.
 #include <doctest/doctest.h>
 
 #include "support/acceptance.h"

@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -21,6 +20,7 @@
 
 #include "support/acceptance.h"
 #include "support/mesher_checks.h"
+#include "support/cgal_demo_data.h"
 
 using namespace delpsc;
 
@@ -342,17 +342,11 @@ TEST_CASE("a ball that reaches a patch its curve does not bound is refined, not 
 }
 
 // Real CAD and scanned models from Debian's libcgal-demo, fetched by scripts/get-cgal-data.sh into
-// data/cgal-demo/ (skipped with a message when absent). G1 and the disk condition at 4% of the
+// data/cgal-demo/ (absent: see tests/support/cgal_demo_data.h). G1 and the disk condition at 4% of the
 // diagonal; G2 per patch is not expected at that size (fandisk's thin patches are not resolved).
 TEST_CASE("libcgal-demo models at 4%") {
-  const auto dir = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo";
   for (const char* name : {"fandisk", "part", "anchor", "joint", "elephant", "cube", "sphere"}) {
-    const auto path = dir / (std::string(name) + ".off");
-    if (!std::filesystem::exists(path)) {
-      MESSAGE(name << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
-      continue;
-    }
     CAPTURE(name);
-    mesh_model(io::read_model(path.string()).soup, 0.04, {.check_patch_topology = false});
+    if (const auto soup = test::cgal_demo_soup(name)) mesh_model(*soup, 0.04, {.check_patch_topology = false});
   }
 }

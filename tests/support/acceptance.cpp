@@ -2,7 +2,6 @@
 
 #include <doctest/doctest.h>
 
-#include <filesystem>
 
 #include <Eigen/Geometry>
 
@@ -13,6 +12,7 @@
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
 
+#include "cgal_demo_data.h"
 #include "mesher_checks.h"
 
 namespace delpsc::test {
@@ -64,14 +64,6 @@ io::TriangleSoup rotated_model(io::TriangleSoup soup) {
   return soup;
 }
 
-io::TriangleSoup cgal_demo_model(const std::string& name) {
-  // This file is tests/support/acceptance.cpp; the data sit in data/cgal-demo/ at the root.
-  const auto path = std::filesystem::path(__FILE__).parent_path() / "../../data/cgal-demo" / (name + ".off");
-  if (!std::filesystem::exists(path)) {
-    MESSAGE(name << ".off absent from data/cgal-demo: run scripts/get-cgal-data.sh to test on it");
-    return {};
-  }
-  return io::read_model(path.string()).soup;
-}
+io::TriangleSoup cgal_demo_model(const std::string& name) { return cgal_demo_soup(name).value_or(io::TriangleSoup{}); }
 
 }  // namespace delpsc::test

@@ -36,8 +36,8 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
 /// planar patch is axis-aligned and rounded coordinates make nearly flat cells.
 io::TriangleSoup rotated_model(io::TriangleSoup soup);
 
-/// data/cgal-demo/NAME.off (fetched by scripts/get-cgal-data.sh), or an empty soup with a
-/// MESSAGE when it is absent (the test then checks nothing for it).
+/// data/cgal-demo/NAME.off (fetched by scripts/get-cgal-data.sh), or an empty soup when it is
+/// absent, which fails the test unless DELPSC_ALLOW_MISSING_CGAL_DATA is set (cgal_demo_data.h).
 io::TriangleSoup cgal_demo_model(const std::string& name);
 
 }  // namespace delpsc::test
