@@ -127,6 +127,10 @@ struct ChangeSet {
   }
 };
 
+/// Defined only by the tests of is_valid(), which corrupt a triangulation on purpose to show that
+/// the checker finds each kind of damage; no library code uses it.
+struct RegularTriangulationTestAccess;
+
 class RegularTriangulation {
  public:
   RegularTriangulation();
@@ -285,6 +289,7 @@ class RegularTriangulation {
   bool is_valid(std::string* why = nullptr) const;
 
  private:
+  friend struct RegularTriangulationTestAccess;
   static constexpr PointId kDeadCell = 0xFFFFFFFDu;  // marks a free slot in Cell::v[0]
 
   /// 32 bytes: vertex ids, and neighbour links (neighbour cell << 2 | index of the shared facet

@@ -7,8 +7,14 @@
 #include <delpsc/refine/restricted_facets_check.h>
 
 #include "support/problem_lines.h"
+#include "support/triangulation_checks.h"
 
 namespace delpsc::test {
+
+namespace {
+// Up to ~0.1 s of brute force a run (~7 cells a point).
+constexpr std::size_t kBruteForceRegularityPoints = 1500;
+}  // namespace
 
 void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls) {
   mesher.run();
@@ -19,6 +25,12 @@ void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls)
   // The regular triangulation itself after all the insertions and ball removals (§2.3 RefineBall).
   std::string why;
   CHECK_MESSAGE(mesher.triangulation().is_valid(&why), why);
+  // And by brute force where that is affordable (O(cells x points)): is_valid's test is local,
+  // and it is the triangulation's own code.
+  if (mesher.triangulation().number_of_points() <= kBruteForceRegularityPoints) {
+    const std::string brute = check_regular_against_all_points(mesher.triangulation());
+    CHECK_MESSAGE(brute.empty(), brute);
+  }
   // Admissibility (§2.1): no unweighted vertex in or on a protecting ball, checked independently.
   for (const std::string& p : refine::check_admissibility(mesher.triangulation())) FAIL_CHECK(p);
   // The restricted facets kept incrementally (some carried over, never rescanned) are those a
