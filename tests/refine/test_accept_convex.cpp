@@ -75,16 +75,14 @@ TEST_CASE("random convex polyhedra, needles included, at 4% and 1%") {
                                                   {Cloud::sphere, "sphere"},
                                                   {Cloud::plate, "plate"},
                                                   {Cloud::cylinder, "cylinder"}};
-  int hulls = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed)
     for (const int n : {8, 20, 60})
       for (const auto& [shape, label] : shapes) {
         test::Rng rng(seed * 1000 + static_cast<std::uint64_t>(n) * 10 + static_cast<std::uint64_t>(shape));
         const io::TriangleSoup hull = convex_hull(random_cloud(rng, n, shape));
+        REQUIRE(hull.triangles.size() >= 4);  // a solid: else the acceptance below had nothing to mesh
         const std::string name = std::string("hull of ") + std::to_string(n) + " points, " + label + ", seed " +
                                  std::to_string(seed);
         for (const double size : {0.04, 0.01}) check_acceptance(name, hull, size);
-        ++hulls;
       }
-  CHECK(hulls == 120);
 }

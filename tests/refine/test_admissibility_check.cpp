@@ -19,9 +19,11 @@ std::size_t problems_with(const Vec3& c, double w, const Vec3& q) {
       {c.x() - s, c.y() - s, c.z() - s, 0}, {c.x() + s, c.y() - s, c.z() - s, 0},
       {c.x(), c.y() + s, c.z() - s, 0},     {c.x(), c.y(), c.z() + s, 0},
       {c.x(), c.y(), c.z(), w},             {q.x(), q.y(), q.z(), 0}};
-  dt.insert(points);
-  REQUIRE(dt.status(4) == delaunay::PointStatus::vertex);
-  REQUIRE(dt.status(5) == delaunay::PointStatus::vertex);  // else the case would test nothing
+  // The batch numbers points in spatial order: ids says which is the ball and which is q.
+  std::vector<delaunay::PointId> ids;
+  dt.insert(points, &ids);
+  REQUIRE(dt.status(ids[4]) == delaunay::PointStatus::vertex);
+  REQUIRE(dt.status(ids[5]) == delaunay::PointStatus::vertex);  // else the case would test nothing
   return refine::check_admissibility(dt).size();
 }
 
