@@ -6,7 +6,10 @@
 #include <utility>
 
 #include <delpsc/io/shapes.h>
+#include <delpsc/io/surface_mesh.h>
 #include <delpsc/refine/triangle_orientation.h>
+
+#include "support/orientation_check.h"
 
 using namespace delpsc;
 
@@ -97,4 +100,24 @@ TEST_CASE("orient_triangles: open and non-manifold sets, and a Moebius strip") {
     strip.push_back({a0, b1, a1});
   }
   CHECK(refine::orient_triangles(v, strip) == 1);
+}
+
+TEST_CASE("the tests' own orientation check reports a flipped triangle and an inward closed surface") {
+  io::SurfaceMesh cube = io::surface_mesh_from(io::make_cube(3));
+  CHECK(refine::orient_triangles(cube.vertices, cube.triangles) == 0);
+  CHECK(test::orientation_problems(cube).empty());
+  io::SurfaceMesh one = cube;
+  std::swap(one.triangles[5][1], one.triangles[5][2]);
+  const auto flipped = test::orientation_problems(one);
+  CHECK(flipped.size() == 3);  // each of its three edges
+  io::SurfaceMesh inward = cube;
+  for (auto& t : inward.triangles) std::swap(t[1], t[2]);
+  const auto turned = test::orientation_problems(inward);
+  REQUIRE(turned.size() == 1);
+  CHECK(turned[0].find("faces inward") != std::string::npos);
+  // An open sheet has no inside: only consistency is asked of it, in either direction.
+  io::SurfaceMesh sheet = io::surface_mesh_from(io::make_square_sheet(3));
+  CHECK(test::orientation_problems(sheet).empty());
+  for (auto& t : sheet.triangles) std::swap(t[1], t[2]);
+  CHECK(test::orientation_problems(sheet).empty());
 }

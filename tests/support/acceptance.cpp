@@ -2,7 +2,6 @@
 
 #include <doctest/doctest.h>
 
-
 #include <Eigen/Geometry>
 
 #include <delpsc/io/read_model.h>
@@ -14,6 +13,8 @@
 
 #include "cgal_demo_data.h"
 #include "mesher_checks.h"
+#include "orientation_check.h"
+#include "problem_lines.h"
 
 namespace delpsc::test {
 
@@ -51,6 +52,9 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   const refine::ComplexTopology in = refine::complex_topology(domain.complex().triangles);
   for (const std::string& d : refine::topology_differences(out, in)) FAIL_CHECK(d);
   CHECK(mesh.corners.size() == domain.corner_count());
+  // Consistently oriented, outward where closed (Mesher::output()); G1 does not look at it.
+  const std::vector<std::string> orientation = orientation_problems(mesh);
+  CHECK_MESSAGE(orientation.empty(), problem_lines(orientation));
   MESSAGE(name << " at " << size_fraction * 100 << "%: vertices=" << mesh.vertices.size()
                << " ball_refinements=" << mesher.stats().ball_refinements);
   return {mesh.vertices.size(), mesher.stats().ball_refinements};

@@ -1,0 +1,68 @@
+#include "orientation_check.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
+#include <tuple>
+
+namespace delpsc::test {
+
+std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::size_t max_problems) {
+  std::vector<std::string> problems;
+  const auto problem = [&](const std::string& what) {
+    if (problems.size() < max_problems) problems.push_back(what);
+  };
+  const auto n = static_cast<std::uint32_t>(mesh.triangles.size());
+  struct Use {
+    std::uint32_t lo, hi, triangle;
+    bool forward;  // the triangle goes from lo to hi
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * std::size_t{n});
+  for (std::uint32_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      uses.push_back({std::min(a, b), std::max(a, b), t, a < b});
+    }
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
+    return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
+  });
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  const auto root = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<char> open(n, 0);  // some edge of the triangle is not in exactly two triangles
+  for (std::size_t b = 0; b < uses.size();) {
+    std::size_t e = b + 1;
+    while (e < uses.size() && uses[e].lo == uses[b].lo && uses[e].hi == uses[b].hi) ++e;
+    if (e - b == 2) {
+      if (uses[b].forward == uses[b + 1].forward)
+        problem("triangles " + std::to_string(uses[b].triangle) + " and " + std::to_string(uses[b + 1].triangle) +
+                " traverse their edge " + std::to_string(uses[b].lo) + "-" + std::to_string(uses[b].hi) +
+                " the same way");
+      parent[root(uses[b].triangle)] = root(uses[b + 1].triangle);
+    } else {
+      for (std::size_t j = b; j < e; ++j) open[uses[j].triangle] = 1;
+    }
+    b = e;
+  }
+  // Six times the signed volume of each component, and whether it is closed.
+  std::vector<double> volume(n, 0);
+  std::vector<char> closed(n, 1);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    const auto& v = mesh.triangles[t];
+    const std::uint32_t r = root(t);
+    volume[r] += mesh.vertices[v[0]].dot(mesh.vertices[v[1]].cross(mesh.vertices[v[2]]));
+    if (open[t]) closed[r] = 0;
+  }
+  for (std::uint32_t t = 0; t < n; ++t)
+    if (root(t) == t && closed[t] && !(volume[t] > 0))
+      problem("the closed component of triangle " + std::to_string(t) + " faces inward (signed volume " +
+              std::to_string(volume[t] / 6) + ")");
+  return problems;
+}
+
+}  // namespace delpsc::test
