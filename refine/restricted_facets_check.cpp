@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include <delpsc/kernel/constructions.h>
 
@@ -71,6 +72,13 @@ bool truly_misses(const delaunay::RegularTriangulation& dt, const Domain& domain
   return std::none_of(hits.begin(), hits.end(), [&](const SurfaceHit& h) { return h.patch == r.patch; });
 }
 
+// Points and sizes of the same pair may differ by this much relative to the box's diagonal.
+constexpr double kRecordTolerance = 1e-9;
+
+std::string text(const Vec3& x) {
+  return std::to_string(x.x()) + ", " + std::to_string(x.y()) + ", " + std::to_string(x.z());
+}
+
 std::string describe(const Pair& p, const char* where) {
   return "triangle " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) +
          " restricted to patch " + std::to_string(p[3]) + " " + where;
@@ -112,6 +120,28 @@ std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangul
   fresh.rebuild(touched);
   const std::vector<Pair> a = pairs_of(kept), b = pairs_of(fresh);
   std::vector<std::string> problems;
+  const kernel::Box3 box = domain.bounding_box();
+  const double scale = (box.hi - box.lo).norm();
+  // Pairs both have: the same point of V_t ∩ σ and the same size, which step 2 reads (a carried
+  // record keeps the point found on a longer dual edge; it must still be the one the shrunk edge
+  // gives). Up to rounding: the two may come from the facet's two sides.
+  std::vector<std::pair<Pair, const RestrictedFacet*>> kept_records;
+  kept.for_each([&](std::uint32_t, const RestrictedFacet& r) {
+    kept_records.push_back({{r.vertices[0], r.vertices[1], r.vertices[2], r.patch}, &r});
+  });
+  std::sort(kept_records.begin(), kept_records.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  const double tolerance = kRecordTolerance * scale;
+  fresh.for_each([&](std::uint32_t, const RestrictedFacet& r) {
+    const Pair p{r.vertices[0], r.vertices[1], r.vertices[2], r.patch};
+    const auto at = std::lower_bound(kept_records.begin(), kept_records.end(), p,
+                                     [](const auto& x, const Pair& key) { return x.first < key; });
+    if (at == kept_records.end() || at->first != p || problems.size() >= max_problems) return;
+    const RestrictedFacet& k = *at->second;
+    if (!((k.point - r.point).norm() <= tolerance && std::abs(k.size - r.size) <= tolerance))
+      problems.push_back(describe(p, ("is kept with point (" + text(k.point) + ") and size " + std::to_string(k.size) +
+                                      "; a fresh scan finds (" + text(r.point) + ") and " + std::to_string(r.size))
+                                         .c_str()));
+  });
   std::vector<Pair> only;
   std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only));
   for (const Pair& p : only)
@@ -119,8 +149,6 @@ std::vector<std::string> check_restricted_facets(const delaunay::RegularTriangul
   only.clear();
   std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only));
   if (only.empty()) return problems;
-  const kernel::Box3 box = domain.bounding_box();
-  const double scale = (box.hi - box.lo).norm();
   fresh.for_each([&](std::uint32_t, const RestrictedFacet& r) {
     const Pair p{r.vertices[0], r.vertices[1], r.vertices[2], r.patch};
     if (problems.size() < max_problems && std::binary_search(only.begin(), only.end(), p) &&

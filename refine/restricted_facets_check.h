@@ -17,8 +17,11 @@
 namespace delpsc::refine {
 
 /// The first problem of `kept`'s references from cells to records, if any
-/// (RestrictedFacets::refs_consistent), alone; else one line per pair (triangle, patch) found by only one of `kept` and a fresh scan of `dt`
-/// against `domain` (at most `max_problems`); empty iff they agree, but for one kind of pair: one
+/// (RestrictedFacets::refs_consistent), alone; else one line per pair (triangle, patch) found by
+/// only one of `kept` and a fresh scan of `dt` against `domain`, and per pair both find with a
+/// different point of V_t ∩ σ or size (beyond 1e-9 of the box's diagonal: step 2 reads both, and
+/// a record carried over keeps its point) (at most `max_problems` lines); empty iff they agree,
+/// but for one kind of pair: one
 /// the scan finds whose exact dual edge - on the triangle's line, from every vertex, not from its
 /// two cells - misses the patch. The scan's edge, computed from nearly flat cells, can run where
 /// the true one does not, and `kept` may rightly lack such a pair: RestrictedFacets::rebuild

@@ -3,6 +3,7 @@
 // and it reports the facets left stale when an insertion is not followed by update().
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -86,6 +87,28 @@ TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed updat
   facets.update(changes, touched, id);
   CHECK(facets.refs_consistent().empty());
   CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+}
+
+TEST_CASE("a kept record whose point or size is not the fresh scan's is reported") {
+  // The records of a sample of the unit cube, checked against the same cube moved by 1e-4 along
+  // x: the same facets stay restricted (their dual edges are far longer), but on the two faces
+  // x = 0 and x = 1 the points of V_t ∩ σ move by 1e-4, far beyond the check's rounding slack.
+  const refine::PolygonDomain domain(io::make_cube(2));
+  io::TriangleSoup moved = io::make_cube(2);
+  for (Vec3& v : moved.vertices) v.x() += 1e-4;
+  const refine::PolygonDomain shifted(moved);
+  delaunay::RegularTriangulation dt;
+  insert_frame(dt);
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 300; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+  refine::RestrictedFacets facets(dt, domain);
+  kernel::LargeVector<delaunay::PointId> touched;
+  facets.rebuild(touched);
+  REQUIRE(facets.size() > 0);
+  CHECK(refine::check_restricted_facets(dt, domain, facets).empty());
+  const auto problems = refine::check_restricted_facets(dt, shifted, facets, 1000);
+  CHECK(std::any_of(problems.begin(), problems.end(),
+                    [](const std::string& p) { return p.find("is kept with point") != std::string::npos; }));
 }
 
 TEST_CASE("excluded frame points: no facet through them is examined, and the records still equal a fresh scan") {
