@@ -57,15 +57,19 @@ void insert_and_follow(delaunay::RegularTriangulation& dt, const refine::Domain&
   }
 }
 
+// The frame, then `count` random points of the unit cube's surface.
+void sample_cube(delaunay::RegularTriangulation& dt, std::mt19937_64& rng, int count) {
+  insert_frame(dt);
+  for (int i = 0; i < count; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+}
+
 }  // namespace
 
 TEST_CASE("restricted facets kept by update() equal a fresh scan; a missed update is caught") {
   const refine::PolygonDomain domain(io::make_cube(2));
   delaunay::RegularTriangulation dt;
-  // The frame, then a coarse sample of the surface.
-  insert_frame(dt);
   std::mt19937_64 rng(3);
-  for (int i = 0; i < 60; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+  sample_cube(dt, rng, 60);  // a coarse sample of the surface
   refine::RestrictedFacets facets(dt, domain);
   kernel::LargeVector<delaunay::PointId> touched;
   facets.rebuild(touched);
@@ -98,9 +102,8 @@ TEST_CASE("a kept record whose point or size is not the fresh scan's is reported
   for (Vec3& v : moved.vertices) v.x() += 1e-4;
   const refine::PolygonDomain shifted(moved);
   delaunay::RegularTriangulation dt;
-  insert_frame(dt);
   std::mt19937_64 rng(11);
-  for (int i = 0; i < 300; ++i) dt.insert(WeightedPoint::from(on_cube(rng)));
+  sample_cube(dt, rng, 300);
   refine::RestrictedFacets facets(dt, domain);
   kernel::LargeVector<delaunay::PointId> touched;
   facets.rebuild(touched);
