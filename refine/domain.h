@@ -50,6 +50,9 @@ struct ClosestSurfacePoint {
   Vec3 point = Vec3::Zero();
   std::uint32_t patch = 0;
   double squared_distance = 0;
+  /// A normal of the input where the point lies, in the input's own winding (for a polygon model
+  /// (b - a) x (c - a) of the closest input triangle, not normalised); zero where there is none.
+  Vec3 normal = Vec3::Zero();
 };
 
 class Domain {

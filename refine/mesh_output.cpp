@@ -40,7 +40,18 @@ io::SurfaceMesh Mesher::output() const {
     mesh.triangles.push_back({vertex(r.vertices[0]), vertex(r.vertices[1]), vertex(r.vertices[2])});
     mesh.triangle_patch.push_back(static_cast<std::int32_t>(r.patch));
   }
-  orient_triangles(mesh.vertices, mesh.triangles);
+  // Where a component has no inside of its own (an open sheet, or closed shells meeting along a
+  // non-manifold edge), the input's orientation decides: a triangle votes by the normal of the
+  // input triangle nearest its centroid, when that lies on the triangle's own patch.
+  const auto follows_input = [&](std::uint32_t t) {
+    const auto& v = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[v[0]], &b = mesh.vertices[v[1]], &c = mesh.vertices[v[2]];
+    const auto near = domain_->closest_point((a + b + c) / 3);
+    if (!near || near->patch != static_cast<std::uint32_t>(mesh.triangle_patch[t])) return 0;
+    const double agreement = (b - a).cross(c - a).dot(near->normal);
+    return agreement > 0 ? 1 : agreement < 0 ? -1 : 0;
+  };
+  orient_triangles(mesh.vertices, mesh.triangles, follows_input);
   // Skl¹: consecutive ball centres along each curve; Skl⁰: the corner balls.
   for (std::uint32_t c = 0; c < domain_->curve_count(); ++c) {
     const std::vector<BallKey> chain = balls_->curve_chain(c);

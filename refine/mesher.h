@@ -190,8 +190,10 @@ class Mesher {
   void run();
 
   /// ∪ Skl^i: restricted triangles labelled by patch (consistently oriented per connected
-  /// component, outward where the component is closed), edges between consecutive ball centres
-  /// labelled by curve, corners.
+  /// component, outward where the component is closed, elsewhere - open sheets, closed shells
+  /// meeting along non-manifold edges - as the input's triangles there are;
+  /// refine/triangle_orientation.h), edges between consecutive ball centres labelled by curve,
+  /// corners.
   io::SurfaceMesh output() const;
 
   /// Vertices of the domain (balls and surface points) that are vertices of the triangulation.

@@ -133,7 +133,9 @@ void PolygonDomain::intersect_ray(const Vec3& origin, const Vec3& direction, std
 std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) const {
   const auto c = tree_.closest_point(x);
   if (!c) return std::nullopt;
-  return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance};
+  const auto& t = complex_.triangles[c->triangle];
+  const Vec3 &a = complex_.vertices[t[0]], &b = complex_.vertices[t[1]], &d = complex_.vertices[t[2]];
+  return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance, (b - a).cross(d - a)};
 }
 
 CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t budget, kernel::LargeVector<Vec3>& points,

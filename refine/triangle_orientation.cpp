@@ -7,7 +7,8 @@
 
 namespace delpsc::refine {
 
-std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles) {
+std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles,
+                             const std::function<int(std::uint32_t)>& prefer) {
   const std::size_t n = triangles.size();
   constexpr std::uint32_t kNone = 0xffffffffu;
   // Each vertex's triangles (flat, by vertex), each with the two other vertices in the
@@ -98,15 +99,26 @@ std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::arra
     if (!orientable) ++bad;
     for (const std::uint32_t t : component)
       if (flip[t] == 1) std::swap(triangles[t][1], triangles[t][2]);
+    bool reverse = false;
     if (closed && orientable) {
       double volume = 0;
       for (const std::uint32_t t : component) {
         const Vec3& p = vertices[triangles[t][0]];
         volume += p.dot(vertices[triangles[t][1]].cross(vertices[triangles[t][2]]));
       }
-      if (volume < 0)
-        for (const std::uint32_t t : component) std::swap(triangles[t][1], triangles[t][2]);
+      reverse = volume < 0;
+    } else if (orientable && prefer) {
+      // Votes from triangles spread over the component (the search's order is spatially coherent).
+      const std::size_t step = std::max<std::size_t>(1, component.size() / kOrientationVotes);
+      long votes = 0;
+      for (std::size_t i = 0; i < component.size(); i += step) {
+        const int vote = prefer(component[i]);
+        votes += vote > 0 ? 1 : vote < 0 ? -1 : 0;
+      }
+      reverse = votes < 0;
     }
+    if (reverse)
+      for (const std::uint32_t t : component) std::swap(triangles[t][1], triangles[t][2]);
   }
   return bad;
 }

@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -120,4 +121,31 @@ TEST_CASE("the tests' own orientation check reports a flipped triangle and an in
   CHECK(test::orientation_problems(sheet).empty());
   for (auto& t : sheet.triangles) std::swap(t[1], t[2]);
   CHECK(test::orientation_problems(sheet).empty());
+}
+
+TEST_CASE("an open component takes the orientation its votes prefer; a closed one stays outward") {
+  io::SurfaceMesh sheet = io::surface_mesh_from(io::make_square_sheet(6));  // in the plane z = 0
+  const auto facing_z = [&](double sign) {
+    return [&sheet, sign](std::uint32_t t) {
+      const auto& v = sheet.triangles[t];
+      const Vec3 n = (sheet.vertices[v[1]] - sheet.vertices[v[0]]).cross(sheet.vertices[v[2]] - sheet.vertices[v[0]]);
+      return sign * n.z() > 0 ? 1 : -1;
+    };
+  };
+  const auto all_facing = [&](double sign) {
+    return std::all_of(sheet.triangles.begin(), sheet.triangles.end(), [&](const auto& v) {
+      const Vec3 n = (sheet.vertices[v[1]] - sheet.vertices[v[0]]).cross(sheet.vertices[v[2]] - sheet.vertices[v[0]]);
+      return sign * n.z() > 0;
+    });
+  };
+  for (const double sign : {1.0, -1.0}) {
+    CAPTURE(sign);
+    CHECK(refine::orient_triangles(sheet.vertices, sheet.triangles, facing_z(sign)) == 0);
+    CHECK(all_facing(sign));
+  }
+  // A closed cube ignores the votes: outward whatever they say.
+  io::SurfaceMesh cube = io::surface_mesh_from(io::make_cube(3));
+  for (auto& t : cube.triangles) std::swap(t[1], t[2]);
+  CHECK(refine::orient_triangles(cube.vertices, cube.triangles, [](std::uint32_t) { return -1; }) == 0);
+  CHECK(test::orientation_problems(cube).empty());
 }

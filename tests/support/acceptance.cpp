@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <delpsc/io/read_model.h>
+#include <delpsc/protect/complex_mesh.h>
 #include <delpsc/protect/protect.h>
 #include <delpsc/refine/complex_topology.h>
 #include <delpsc/refine/mesher.h>
@@ -55,6 +56,12 @@ AcceptanceRun check_acceptance(const std::string& name, const io::TriangleSoup& 
   // Consistently oriented, outward where closed (Mesher::output()); G1 does not look at it.
   const std::vector<std::string> orientation = orientation_problems(mesh);
   CHECK_MESSAGE(orientation.empty(), problem_lines(orientation));
+  // ...and as the input is where a component has no inside of its own, when the input itself is
+  // wound consistently and outward where closed (boeing.off, welded, is not).
+  if (orientation_problems(protect::to_surface_mesh(domain.complex()), 1).empty()) {
+    const std::vector<std::string> against = patches_against_input(mesh, domain);
+    CHECK_MESSAGE(against.empty(), problem_lines(against));
+  }
   MESSAGE(name << " at " << size_fraction * 100 << "%: vertices=" << mesh.vertices.size()
                << " ball_refinements=" << mesher.stats().ball_refinements);
   return {mesh.vertices.size(), mesher.stats().ball_refinements};

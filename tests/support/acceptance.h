@@ -4,7 +4,8 @@
 // G2 per patch (each patch's Euler characteristic and boundary loops, cut open along slits, equal
 // the input patch's) and G2 for the whole output (refine/complex_topology.h: components, Euler
 // characteristic, boundary loops, singular curves, sheets and orientability equal the input's),
-// and the triangles consistently oriented, outward where closed (orientation_check.h).
+// and the triangles consistently oriented, outward where closed, each patch as the input is
+// when the input is wound consistently (orientation_check.h).
 // doctest CHECKs, so a failure names the model and the size.
 #pragma once
 

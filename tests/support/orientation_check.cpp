@@ -65,4 +65,24 @@ std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::
   return problems;
 }
 
+std::vector<std::string> patches_against_input(const io::SurfaceMesh& mesh, const refine::Domain& domain) {
+  std::vector<long> agree(domain.patch_count(), 0), disagree(domain.patch_count(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[v[0]], &b = mesh.vertices[v[1]], &c = mesh.vertices[v[2]];
+    const auto near = domain.closest_point((a + b + c) / 3);
+    const auto patch = static_cast<std::uint32_t>(mesh.triangle_patch[t]);
+    if (!near || near->patch != patch || patch >= agree.size()) continue;
+    const double d = (b - a).cross(c - a).dot(near->normal);
+    if (d > 0) ++agree[patch];
+    if (d < 0) ++disagree[patch];
+  }
+  std::vector<std::string> problems;
+  for (std::size_t p = 0; p < agree.size(); ++p)
+    if (disagree[p] >= agree[p] && disagree[p] > 0)
+      problems.push_back("patch " + std::to_string(p) + " faces against the input: " + std::to_string(disagree[p]) +
+                         " of its triangles disagree with the input's, " + std::to_string(agree[p]) + " agree");
+  return problems;
+}
+
 }  // namespace delpsc::test

@@ -9,10 +9,18 @@
 #include <vector>
 
 #include <delpsc/io/surface_mesh.h>
+#include <delpsc/refine/domain.h>
 
 namespace delpsc::test {
 
 /// Problems found, in words (at most `max_problems`); empty when the orientation is as promised.
 std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::size_t max_problems = 20);
+
+/// Patches of the output facing against the input: each triangle compares its normal with that
+/// of the input triangle nearest its centroid (Domain::closest_point), when that lies on the
+/// triangle's own patch; a patch whose triangles disagree more often than they agree is
+/// reported. For inputs wound consistently and outward where closed (the generated and
+/// libcgal-demo models). One closest-point query per triangle.
+std::vector<std::string> patches_against_input(const io::SurfaceMesh& mesh, const refine::Domain& domain);
 
 }  // namespace delpsc::test
