@@ -54,8 +54,8 @@ int run(const FeaturesOptions& o, const GlobalOptions& g) {
     move_to_file_frame(mesh.vertices);
     try {
       if (!o.output.empty()) {
+        refuse_stl_that_collapses(o.output, mesh);
         io::write_mesh(o.output, mesh);
-        warn_if_stl_collapses(o.output, mesh, g);
       }
       if (!o.preview.empty()) {
         io::PreviewOptions preview;

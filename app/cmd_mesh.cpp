@@ -307,8 +307,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     // Last use of the coordinates: the checks and distances above ran in the moved frame, where
     // the mesh was made; the file gets the input's frame (rounded to its precision).
     move_to_file_frame(mesh.vertices);
+    refuse_stl_that_collapses(o.output, mesh);
     io::write_mesh(o.output, mesh);
-    warn_if_stl_collapses(o.output, mesh, g);
     if (!o.preview.empty()) {
       io::PreviewOptions preview;
       char title[256];

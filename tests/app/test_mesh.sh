@@ -366,8 +366,12 @@ DUMMY
 expect 0 "1 vertex(es) used by no triangle ignored (the first at (0, 0, 0))" -- mesh "$TMP/far_dummy.off" --size 2% --check -o "$TMP/far_dummy_out.off"
 [[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" ]] \
   || fail "part moved by 1e9 with a dummy vertex at the origin: g1=$(value g1) topology_ok=$(value topology_ok)"
-# STL keeps floats: 24 bits cannot hold the part's triangles 1e9 away, and the command says so.
-expect 0 "triangles have no area once rounded to them" -- mesh "$TMP/far.off" --size 10% -o "$TMP/far.stl"
+# STL keeps floats: 24 bits cannot hold the part's triangles 1e9 away; the command refuses to
+# write such a file (quiet or not) and names the formats that keep doubles.
+rm -f "$TMP/far.stl"
+expect 2 "would have no area once rounded to them" -- mesh "$TMP/far.off" --size 10% -o "$TMP/far.stl"
+[[ ! -e "$TMP/far.stl" ]] || fail "a collapsing STL was written"
+expect 2 "use .off, .obj, .ply or .mesh" -- -q mesh "$TMP/far.off" --size 10% -o "$TMP/far.stl"
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/near.stl"
 ! grep -q "single-precision" "$TMP/err" || fail "the cube near the origin as .stl: $(head -c 300 "$TMP/err")"
 expect 0 "" -- info "$TMP/far.off"
