@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include <delpsc/io/mesh_writer.h>
+#include <delpsc/io/output_file.h>
 #include <delpsc/io/preview_svg.h>
 #include <delpsc/protect/balls.h>
 #include <delpsc/protect/complex.h>
@@ -323,10 +324,11 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, e.what()};
   }
   if (!o.balls_path.empty()) {
-    std::ofstream out(o.balls_path, std::ios::binary);
-    out << protect::balls_to_text(*ball_set, model_offset());
-    out.close();
-    if (!out) throw Failure{kBadInput, o.balls_path + ": cannot write"};
+    try {
+      io::write_output_file(o.balls_path, protect::balls_to_text(*ball_set, model_offset()));
+    } catch (const io::Error& e) {
+      throw Failure{kBadInput, e.what()};
+    }
   }
   phases.emplace_back("output", seconds_since(t_output));
   progress.clear();

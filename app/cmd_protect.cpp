@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <delpsc/io/error.h>
+#include <delpsc/io/output_file.h>
 #include <delpsc/protect/ball_checker.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/protect.h>
@@ -39,10 +41,11 @@ bool ends_with_vtu(const std::string& path) {
 }
 
 void write_file(const std::string& path, const std::string& contents) {
-  std::ofstream out(path, std::ios::binary);
-  out << contents;
-  out.close();
-  if (!out) throw Failure{kBadInput, path + ": cannot write"};
+  try {
+    io::write_output_file(path, contents);
+  } catch (const io::Error& e) {
+    throw Failure{kBadInput, e.what()};
+  }
 }
 
 void append_number(std::string& out, double x) {

@@ -3,6 +3,9 @@
 #include <cstdio>
 #include <memory>
 
+#include <delpsc/io/error.h>
+#include <delpsc/io/output_file.h>
+
 #include "json_writer.h"
 
 namespace delpsc::app {
@@ -56,10 +59,12 @@ std::string Report::to_json() const {
 }
 
 bool Report::write_json(const std::string& path) const {
-  const std::string text = to_json();
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!f) return false;
-  return std::fwrite(text.data(), 1, text.size(), f.get()) == text.size() && std::fflush(f.get()) == 0;
+  try {
+    io::write_output_file(path, to_json());  // no truncated report when the disk is full
+    return true;
+  } catch (const io::Error&) {
+    return false;
+  }
 }
 
 Report& final_report() {

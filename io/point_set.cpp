@@ -11,6 +11,7 @@
 #include <delpsc/kernel/predicates.h>
 
 #include "error.h"
+#include "output_file.h"
 
 namespace delpsc::io {
 
@@ -106,18 +107,14 @@ std::vector<WeightedPoint> read_point_set(const std::string& path) {
 
 void write_point_set(const std::string& path, const std::vector<WeightedPoint>& points) {
   if (has_suffix(path, ".bin")) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw Error(path + ": cannot open for writing");
-    out.write(reinterpret_cast<const char*>(points.data()),
-              static_cast<std::streamsize>(points.size() * sizeof(WeightedPoint)));
-    if (!out) throw Error(path + ": write failed");
+    write_output_file(path, std::string_view(reinterpret_cast<const char*>(points.data()),
+                                             points.size() * sizeof(WeightedPoint)));
     return;
   }
-  std::ofstream out(path);
-  if (!out) throw Error(path + ": cannot open for writing");
+  std::ostringstream out;
   out.precision(17);
   for (const auto& p : points) out << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.w << '\n';
-  if (!out) throw Error(path + ": write failed");
+  write_output_file(path, out.str());
 }
 
 }  // namespace delpsc::io

@@ -12,6 +12,7 @@
 
 #include "error.h"
 #include "hidden_faces.h"
+#include "output_file.h"
 
 namespace delpsc::io {
 
@@ -231,10 +232,7 @@ void write_preview_svg(const std::string& path, const SurfaceMesh& mesh, const P
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!f) throw Error(path + ": cannot open for writing");
-  if (std::fwrite(svg.data(), 1, svg.size(), f.get()) != svg.size() || std::fflush(f.get()) != 0)
-    throw Error(path + ": write failed (disk full?)");
+  write_output_file(path, svg);
 }
 
 }  // namespace delpsc::io

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "mesh_formats.h"
+#include "output_file.h"
 
 namespace delpsc::io {
 
@@ -96,10 +97,7 @@ void write_mesh(const std::string& path, const SurfaceMesh& mesh) {
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!f) throw Error(path + ": cannot open for writing");
-  if (std::fwrite(bytes.data(), 1, bytes.size(), f.get()) != bytes.size() || std::fflush(f.get()) != 0)
-    throw Error(path + ": write failed (disk full?)");
+  write_output_file(path, bytes);
 }
 
 }  // namespace delpsc::io

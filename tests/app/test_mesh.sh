@@ -396,4 +396,13 @@ elif [[ -n "${DELPSC_ALLOW_MISSING_CGAL_DATA:-}" ]]; then
 else
   fail "$cheese absent: run scripts/get-cgal-data.sh, or set DELPSC_ALLOW_MISSING_CGAL_DATA=1 to skip the real models"
 fi
+
+# A write that fails halfway (a file-size limit standing in for a full disk; SIGXFSZ ignored so
+# that write(2) fails instead) exits 2 and leaves the previous file as it was, no partial one.
+printf 'previous\n' >"$TMP/full.off"
+(trap '' XFSZ; ulimit -f 16; exec "$DELPSC" -q mesh "$TMP/cube.off" --size 2% -o "$TMP/full.off") >"$TMP/out" 2>"$TMP/err"
+got=$?
+[[ $got -eq 2 ]] && grep -q "write failed" "$TMP/err" || fail "write past the file-size limit: exit $got, $(head -c 300 "$TMP/err")"
+[[ "$(cat "$TMP/full.off")" == "previous" ]] || fail "a failed write changed the previous file"
+[[ -z "$(ls "$TMP" | grep 'full.off.delpsc-')" ]] || fail "a failed write left a temporary file"
 finish

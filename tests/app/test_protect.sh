@@ -86,7 +86,7 @@ done
 expect 2 "" -- protect "$TMP/cube.off"
 expect 2 "" -- protect "$TMP/cube.off" --size 1% --angle 200
 expect 2 ".vtu" -- protect "$TMP/cube.off" --size 1% -o "$TMP/balls.txt"
-expect 2 "cannot write" -- protect "$TMP/cube.off" --size 1% --balls "$TMP/no/such/dir/balls.txt"
+expect 2 "cannot open for writing" -- protect "$TMP/cube.off" --size 1% --balls "$TMP/no/such/dir/balls.txt"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- protect "$TMP/crossing.off" --size 1%
 # A size the job could never finish at is refused at once, not after minutes at a cap.

@@ -1,0 +1,57 @@
+#include "output_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <memory>
+
+#include "error.h"
+
+namespace delpsc::io {
+
+namespace {
+
+// Writes all of `bytes` to the descriptor, retrying short writes and EINTR.
+bool write_all(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+void write_in_place(const std::string& path, std::string_view bytes) {
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!f) throw Error(path + ": cannot open for writing");
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f.get()) != bytes.size() || std::fflush(f.get()) != 0)
+    throw Error(path + ": write failed (disk full?)");
+}
+
+}  // namespace
+
+void write_output_file(const std::string& path, std::string_view bytes) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    write_in_place(path, bytes);
+    return;
+  }
+  static std::atomic<unsigned> counter{0};
+  const std::string temporary =
+      path + ".delpsc-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error(path + ": cannot open for writing");
+  const bool written = write_all(fd, bytes);
+  const bool closed = ::close(fd) == 0;  // NFS and others report a full disk only here
+  if (!written || !closed || ::rename(temporary.c_str(), path.c_str()) != 0) {
+    ::unlink(temporary.c_str());
+    throw Error(path + (written && closed ? ": cannot replace it" : ": write failed (disk full?)"));
+  }
+}
+
+}  // namespace delpsc::io
