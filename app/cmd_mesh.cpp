@@ -103,7 +103,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   const auto t0 = Clock::now();
   // The domain's tree serves the input checks too (a second tree was ~5% of meshing fandisk at 2%).
   const refine::PolygonDomain domain(load_complex(model, o.input, o.angle, o.corner_angle, g));
-  reject_self_intersections(domain.complex(), domain.tree(), o.input);
+  progress.phase("input check");
+  reject_self_intersections(domain.complex(), domain.tree(), o.input, &time_limit);
   reject_empty_complex(domain.complex(), model, o.input, "mesh");
   reject_pinched_patches(domain.complex(), o.input);
   if (!g.quiet)

@@ -111,7 +111,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
   const io::ReadResult model = load_model(o.input, g);
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
-  reject_self_intersections(complex, o.input);
+  reject_self_intersections(complex, o.input, &time_limit);
   reject_empty_complex(complex, model, o.input, "protect");
 
   const double diagonal = protect::BallSet(complex).diagonal();

@@ -10,11 +10,13 @@
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/self_intersections.h>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
 #include "command.h"
 #include "file_frame.h"
+#include "time_limit.h"
 
 namespace delpsc::app {
 
@@ -110,14 +112,18 @@ inline void reject_near_contact(const protect::Complex& complex, const std::arra
 /// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
 /// it hit a cap or ran out of memory. The message names the first pair and where it is. Then the
-/// near contacts (reject_near_contact), found in the same descent of `tree`.
+/// near contacts (reject_near_contact), found in the same descent of `tree`. `limit`, if given,
+/// can stop the search (--max-seconds): the command then ends with exit code 1, nothing written.
 inline void reject_self_intersections(const protect::Complex& complex, const kernel::AabbTree& tree,
-                                      const std::string& path) {
+                                      const std::string& path, const TimeLimit* limit = nullptr) {
   kernel::Box3 box;
   for (const Vec3& p : complex.vertices) box.extend(p);
   const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();
-  const protect::InputDefects defects =
-      protect::find_input_defects(complex, tree, kSelfIntersectionsCounted, tolerance);
+  const protect::InputDefects defects = protect::find_input_defects(
+      complex, tree, kSelfIntersectionsCounted, tolerance, limit ? limit->poll() : std::function<bool()>{});
+  if (defects.stopped)
+    throw Failure{kCheckFailed, path + ": " + limit->stopped() +
+                                    " while checking the model for self-intersections; nothing written"};
   const auto& pairs = defects.crossing;
   if (pairs.empty()) {
     if (defects.near_contact) reject_near_contact(complex, *defects.near_contact, tolerance, path);
@@ -139,8 +145,9 @@ inline void reject_self_intersections(const protect::Complex& complex, const ker
 }
 
 /// The same with a tree of its own (one tree for both checks); `delpsc mesh` passes its domain's.
-inline void reject_self_intersections(const protect::Complex& complex, const std::string& path) {
-  reject_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), path);
+inline void reject_self_intersections(const protect::Complex& complex, const std::string& path,
+                                      const TimeLimit* limit = nullptr) {
+  reject_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), path, limit);
 }
 
 /// A bad-input exit when a patch touches itself only at a vertex (protect::Complex::pinches):

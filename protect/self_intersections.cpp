@@ -112,7 +112,7 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 }
 
 InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& tree, std::size_t max_pairs,
-                                double tolerance) {
+                                double tolerance, const std::function<bool()>& stop) {
   InputDefects found;
   const bool near = tolerance > 0;  // false for NaN too
   if (complex.triangles.empty() || (max_pairs == 0 && !near)) return found;
@@ -155,8 +155,12 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   // in order of (first, second) stopping at max_pairs would give. One descent for both checks:
   // the near contacts took a box query per vertex, a quarter of the checks on a million
   // triangles.
+  struct Stopped {};  // thrown out of the descent when `stop` says so
+  std::size_t visited = 0;
+  try {
   tree.for_each_overlapping_pair(
       [&](std::uint32_t x, std::uint32_t y) {
+        if (stop && (++visited & 0xfffu) == 0 && stop()) throw Stopped{};
         const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
         const auto& ia = complex.triangles[pair[0]];
         const auto& ib = complex.triangles[pair[1]];
@@ -176,6 +180,9 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
         }
       },
       near ? tolerance : 0);
+  } catch (const Stopped&) {
+    found.stopped = true;
+  }
   std::sort_heap(pairs.begin(), pairs.end());
   return found;
 }
