@@ -126,8 +126,12 @@ bool SoupBuilder::add_vertex(double x, double y, double z) {
 
 namespace {
 
-/// Polygons with more corners than this are always fanned: ear clipping is quadratic or worse.
+/// Ear clipping is quadratic or worse: a convex polygon with more corners than this is fanned
+/// without the convexity test's help being needed, a concave one is clipped up to
+/// kMostCornersClippedConcave corners (~0.1 s) and refused beyond (its fan would overlap itself:
+/// a star-shaped 1,000-gon was refused as a self-intersecting model).
 constexpr std::size_t kMostCornersClipped = 500;
+constexpr std::size_t kMostCornersClippedConcave = 5000;
 /// A triangle below this shape (add_polygon: about a 3° angle in a triangle of otherwise even
 /// sides) is a sliver worth a second split, by best ears, of a polygon of at most
 /// kMostCornersBestEar corners (O(n^3)).
@@ -162,7 +166,7 @@ void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   const auto fan = [](const std::vector<std::uint32_t>& corners, auto& out) {
     for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
   };
-  if (n <= 3 || n > kMostCornersClipped) return fan(v, soup_.triangles);
+  if (n <= 3) return fan(v, soup_.triangles);
   const auto& V = soup_.vertices;
   Vec3 normal = Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) normal += V[v[i]].cross(V[v[(i + 1) % n]]);
@@ -176,6 +180,12 @@ void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   for (std::size_t i = 0; i < n; ++i) q[i] = {V[v[i]][u], V[v[i]][w]};
   bool convex = true;
   for (std::size_t i = 0; i < n && convex; ++i) convex = turn(q[(i + n - 1) % n], q[i], q[(i + 1) % n]) >= 0;
+  if (n > kMostCornersClipped && convex) return fan(v, soup_.triangles);
+  if (n > kMostCornersClippedConcave)
+    fail("", "polygon " + std::to_string(report_.polygons) + " has " + std::to_string(n) +
+                 " corners and is not convex: splitting it into triangles here stops at " +
+                 std::to_string(kMostCornersClippedConcave) + " corners (its fan would overlap itself); "
+                 "triangulate the model beforehand");
 
   // 4√3 area / (sum of squared sides): 1 for an equilateral triangle, 0 for a degenerate one.
   const auto shape = [&](std::size_t a, std::size_t b, std::size_t c) {

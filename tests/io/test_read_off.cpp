@@ -202,6 +202,48 @@ TEST_CASE("OFF: a polygon whose fan would make slivers is split into well-shaped
   CHECK(r.report.degenerate_triangles.empty());
 }
 
+// A star-shaped polygon: corner i at radius 1 or 0.5 alternately, so every other corner is reflex.
+std::string star_polygon_off(int corners) {
+  // Appended piece by piece: GCC 12 sees a false overlap in "literal" + std::string (-Wrestrict).
+  std::string text = "OFF\n";
+  text += std::to_string(corners);
+  text += " 1 0\n";
+  char line[96];
+  for (int i = 0; i < corners; ++i) {
+    const double angle = 2 * M_PI * i / corners, r = i % 2 == 0 ? 1.0 : 0.5;
+    std::snprintf(line, sizeof line, "%.17g %.17g 0\n", r * std::cos(angle), r * std::sin(angle));
+    text += line;
+  }
+  text += std::to_string(corners);
+  for (int i = 0; i < corners; ++i) {
+    text += ' ';
+    text += std::to_string(i);
+  }
+  text += '\n';
+  return text;
+}
+
+// Concave polygons of more than 500 corners were fanned, and a fan from a reflex corner overlaps
+// itself: a valid star-shaped 1,000-gon was refused as a self-intersecting model. Up to 5,000
+// corners they are now clipped into triangles that cover the polygon once; beyond, refused by name.
+TEST_CASE("OFF: a concave polygon of 1,000 corners is split inside itself; one of 6,000 is refused by name") {
+  const auto r = read_bytes(star_polygon_off(1000), io::ModelFormat::off);
+  REQUIRE(r.soup.triangles.size() == 998);
+  double area = 0;
+  bool all_up = true;
+  for (const auto& t : r.soup.triangles) {
+    const Vec3 &a = r.soup.vertices[t[0]], &b = r.soup.vertices[t[1]], &c = r.soup.vertices[t[2]];
+    const double z = (b - a).cross(c - a).z();
+    all_up &= z > 0;  // a fan from a reflex corner would turn some triangles over
+    area += z / 2;
+  }
+  CHECK(all_up);
+  // The star's area: 1,000 triangles (origin, corner i, corner i + 1) of sides 1 and 0.5.
+  CHECK(area == doctest::Approx(1000 * 0.5 * 0.5 * std::sin(2 * M_PI / 1000)).epsilon(1e-4));
+  const std::string error = io_error_of([] { read_bytes(star_polygon_off(6000), io::ModelFormat::off); });
+  CHECK(error.find("has 6000 corners and is not convex") != std::string::npos);
+}
+
 // read_model reads a file straight into a buffer of its size; a FIFO has no size, so the buffer
 // starts at 64 KiB and grows until a read comes back short. Both must give the bytes exactly:
 // a model of ~300 KiB read through each equals the same model parsed from memory.
