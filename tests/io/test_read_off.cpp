@@ -166,6 +166,13 @@ TEST_CASE("OFF: coordinates below the predicates' range are set to 0, with a war
   CHECK(r.soup.vertices[2] == Vec3(0, 0, 1));
   REQUIRE(r.report.warnings.size() == 1);
   CHECK(r.report.warnings[0].find("2 coordinate(s) smaller than 2^-140") != std::string::npos);
+  // On a model that small itself, the same would change its shape: refused, with the way out.
+  const std::string error = io_error_of([] {
+    io::read_model_from_memory("OFF\n3 1 0\n0 0 0\n1e-40 3e-43 0\n0 -1e-43 1e-40\n3 0 1 2\n", io::ModelFormat::off,
+                               "t.off");
+  });
+  CHECK(error.find("2 coordinate(s) smaller than 2^-140") != std::string::npos);
+  CHECK(error.find("would change its shape; scale the model up") != std::string::npos);
 }
 
 namespace {
