@@ -60,9 +60,14 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   // The sharpest edge between two triangles (input_defects.h).
   const auto sharpest = sharpest_fold(complex);
   report("sharpest_fold_degrees", sharpest ? sharpest->dihedral_degrees : 180.0);
-  report("warnings", model.report.warnings.size());
-  if (const std::string fold = fold_warning(complex, sharpest, o.input); !fold.empty() && !g.quiet)
-    std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
+  // Every warning line this command prints (or would print without -q): the reader's, then
+  // load_model's and load_complex's own (unused vertices, zero-area triangles, flat caps), then
+  // the three below. Counting the reader's alone said 0 beside two printed lines.
+  const std::string fold = fold_warning(complex, sharpest, o.input);
+  report("warnings", model.report.warnings.size() + (model.report.unused_vertices > 0) +
+                         !model.report.degenerate_triangles.empty() + !complex.cleanup.flat_caps.empty() +
+                         !fold.empty() + (crossing > 0) + !complex.pinches.empty());
+  if (!fold.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
   if (crossing > 0 && !g.quiet)
     std::fprintf(stderr,
                  "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",

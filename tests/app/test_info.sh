@@ -13,10 +13,14 @@ expect 0 "zero-area" -- info "$TMP/sheet.off"
 [[ "$(value boundary_edges)" == "4" ]] || fail "boundary_edges: $(value boundary_edges)"
 [[ "$(value bbox)" == "0 0 0 1 1 0" ]] || fail "bbox: $(value bbox)"
 [[ "$(value self_intersections)" == "0" ]] || fail "self_intersections: $(value self_intersections)"
+# warnings= counts every warning line printed, not only the reader's.
+printed=$(grep -c "warning" "$TMP/err")
+[[ "$(value warnings)" == "$printed" && "$printed" -ge 2 ]] || fail "warnings=$(value warnings), $printed printed"
 # A self-intersecting model: info counts the crossing pairs and warns, and still succeeds.
 write_crossing "$TMP/crossing.off"
 expect 0 "cross or overlap" -- info "$TMP/crossing.off"
 [[ "$(value self_intersections)" == "1" ]] || fail "crossing: self_intersections=$(value self_intersections)"
+[[ "$(value warnings)" == "$(grep -c "warning" "$TMP/err")" ]] || fail "crossing: warnings=$(value warnings)"
 
 # --report (shared by every subcommand): the same figures as JSON.
 expect 0 "" -- info "$TMP/sheet.off" --report "$TMP/info.json"
