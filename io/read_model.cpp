@@ -94,11 +94,19 @@ ReadResult read_model(const std::string& path) {
 }
 
 ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, const std::string& name) {
+  // Compressed data named like a model: say so, instead of a header or count error about the
+  // compressed bytes (a gzipped .stl was refused for the triangle count it seemed to announce).
+  if (bytes.starts_with("\x1f\x8b"))
+    throw Error(name + ": gzip-compressed data, not a model file: decompress it first (gunzip)");
+  if (bytes.starts_with("PK\x03\x04")) throw Error(name + ": a zip archive, not a model file: extract the model first");
   detail::SoupBuilder builder(name);
   // A UTF-8 byte-order mark, which some Windows editors put before any text: not part of an OFF
-  // or OBJ file's content (STL's and PLY's first bytes are their own: a binary header, "ply").
+  // or OBJ file's content, nor of a PLY header's "ply" (STL decides for itself: a binary STL's
+  // header is free-form, parse_stl).
   const bool line_text = format == ModelFormat::off || format == ModelFormat::obj;
-  if (line_text && bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
+  if (bytes.starts_with("\xEF\xBB\xBF") &&
+      (line_text || (format == ModelFormat::ply && bytes.substr(3).starts_with("ply"))))
+    bytes.remove_prefix(3);
   const std::string normalised = line_text ? with_lone_cr_as_newline(bytes) : std::string();
   if (!normalised.empty()) bytes = normalised;
   switch (format) {

@@ -137,6 +137,22 @@ TEST_CASE("OFF and OBJ: a UTF-8 byte-order mark before the text is skipped") {
              .empty());
 }
 
+TEST_CASE("ASCII STL and PLY after a byte-order mark are read; compressed data is named as such") {
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                          "endloop\nendfacet\nendsolid t\n";
+  CHECK(read_bytes(bom + stl, io::ModelFormat::stl).soup.triangles.size() == 1);  // was read as binary
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  CHECK(read_bytes(bom + ply, io::ModelFormat::ply).soup.triangles.size() == 1);
+  for (const auto format : {io::ModelFormat::off, io::ModelFormat::stl, io::ModelFormat::ply, io::ModelFormat::obj}) {
+    CHECK(io_error_of([&] { read_bytes(std::string("\x1f\x8b\x08\x00rest", 8), format); }).find("gzip-compressed") !=
+          std::string::npos);
+    CHECK(io_error_of([&] { read_bytes("PK\x03\x04rest", format); }).find("zip archive") != std::string::npos);
+  }
+}
+
 TEST_CASE("OFF and OBJ: lines ended by a lone carriage return (classic Mac OS) read as lines") {
   std::string cr = kCube;  // its comment line would otherwise run to the end of the file
   std::replace(cr.begin(), cr.end(), '\n', '\r');
