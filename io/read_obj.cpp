@@ -1,6 +1,9 @@
 // Wavefront OBJ: "v x y z [w | r g b]" and "f" statements; every other statement (vt, vn, g, o,
-// s, usemtl, mtllib, l, p, free-form geometry...) is skipped. Indices count from 1; negative
+// s, usemtl, mtllib, l, p, free-form geometry...) is skipped, and one OBJ does not define with a
+// warning (none of v and f at all: refused, naming the first). Indices count from 1; negative
 // ones count back from the last vertex defined so far.
+#include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -38,10 +41,27 @@ bool is_printable_ascii(std::string_view s) {
 
 }  // namespace
 
+namespace {
+
+// The OBJ statements skipped on purpose (texture and normal data, groups, materials, lines,
+// points, free-form geometry, display attributes); any other keyword is counted as unknown.
+bool known_statement(std::string_view keyword) {
+  static constexpr std::array<std::string_view, 38> kKnown = {
+      "vt",   "vn",   "vp",    "g",     "o",      "s",       "usemtl", "mtllib", "l",    "p",
+      "cstype", "deg", "bmat", "step",  "curv",   "curv2",   "surf",   "parm",   "trim", "hole",
+      "scrv", "sp",   "end",   "con",   "mg",     "bevel",   "c_interp", "d_interp", "lod", "maplib",
+      "usemap", "shadow_obj", "trace_obj", "ctech", "stech", "call", "csh", "vc"};
+  return std::find(kKnown.begin(), kKnown.end(), keyword) != kKnown.end();
+}
+
+}  // namespace
+
 void parse_obj(std::string_view bytes, SoupBuilder& out) {
   out.report().format = "OBJ";
   TextScanner in(bytes, '#');
   std::vector<std::uint32_t> polygon;
+  std::size_t unknown = 0, first_unknown_line = 0;
+  std::string first_unknown;
   while (in.skip_to_content()) {
     const std::string_view keyword = in.token_on_line();
     const std::size_t line = in.line();
@@ -79,9 +99,18 @@ void parse_obj(std::string_view bytes, SoupBuilder& out) {
       out.add_polygon(polygon);
     } else if (!is_printable_ascii(keyword)) {
       out.fail(at_line(line), "not an OBJ statement: " + quoted(keyword) + " (binary data?)");
+    } else if (!known_statement(keyword)) {
+      if (unknown++ == 0) first_unknown_line = line, first_unknown = quoted(keyword);
     }
     in.next_line();
   }
+  // Skipped without a word before: an OFF file named .obj was then "an empty model".
+  if (unknown > 0 && out.file_vertex_count() == 0 && out.report().polygons == 0)
+    out.fail(at_line(first_unknown_line), "no OBJ 'v' or 'f' statement, and " + first_unknown +
+                                              " is no OBJ statement: is this an OBJ file?");
+  if (unknown > 0)
+    out.report().warnings.push_back(std::to_string(unknown) + " line(s) with a statement OBJ does not know skipped, " +
+                                    "the first " + first_unknown + " at line " + std::to_string(first_unknown_line));
 }
 
 }  // namespace delpsc::io::detail

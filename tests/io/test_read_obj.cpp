@@ -23,6 +23,7 @@ TEST_CASE("OBJ: v/vt/vn face forms, other statements ignored") {
   CHECK(r.soup.triangles[0] == std::array<std::uint32_t, 3>{0, 1, 2});
   CHECK(r.soup.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
   CHECK(r.soup.vertices[2] == Vec3(1, 1, 0));
+  CHECK(r.report.warnings.empty());  // every statement skipped here is one OBJ defines
 }
 
 TEST_CASE("OBJ: negative indices count back from the last vertex defined so far") {
@@ -68,4 +69,16 @@ TEST_CASE("OBJ: errors name the line and the problem") {
     CHECK_MESSAGE(msg.rfind("mem.obj: ", 0) == 0, msg);
     CHECK_MESSAGE(msg.find(c.fragment) != std::string::npos, "got: " << msg << "\nwant: " << c.fragment);
   }
+}
+
+TEST_CASE("OBJ: a statement OBJ does not know is skipped with a warning; a file of none is refused by name") {
+  const auto r = read_bytes("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nfoo bar\ng part\nf 1 2 3\nbaz\n", io::ModelFormat::obj);
+  CHECK(r.soup.triangles.size() == 1);
+  REQUIRE(r.report.warnings.size() == 1);  // vt and g are known and skipped silently
+  CHECK(r.report.warnings[0].find("2 line(s) with a statement OBJ does not know skipped, the first 'foo' at line 5") !=
+        std::string::npos);
+  // An OFF file named .obj: no v or f at all; it was refused as an empty model.
+  const std::string error =
+      io_error_of([] { read_bytes("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", io::ModelFormat::obj); });
+  CHECK(error.find("line 1: no OBJ 'v' or 'f' statement, and 'OFF' is no OBJ statement") != std::string::npos);
 }
