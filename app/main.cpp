@@ -1,5 +1,7 @@
 // The delpsc command: one program, one subcommand per job (see README and `delpsc --help`).
+#include <algorithm>
 #include <cstdio>
+#include <string>
 #include <exception>
 #include <vector>
 
@@ -35,11 +37,36 @@ int main(int argc, char** argv) {
   add("mesh", "Mesh a polygon model with DelPSC: protecting balls, then restricted Delaunay refinement", register_mesh);
   add("triangulate", "Build the 3D regular triangulation of a weighted point set", register_triangulate);
 
+  // A first word that is no option and no command: say which commands there are (CLI11 said
+  // only "A subcommand is required").
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    if (std::none_of(commands.begin(), commands.end(), [&](const auto& c) { return c.first->get_name() == word; })) {
+      std::fprintf(stderr, "delpsc: unknown command '%s'; the commands are info, features, protect, mesh and "
+                           "triangulate (delpsc --help)\n", word.c_str());
+      return kBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kBadInput;  // --help and --version exit 0; usage errors exit 2
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kBadInput;  // --help, --version
+    // Usage errors as every other error: "delpsc: " first, exit 2, and the JSON report when
+    // --report is given.
+    const std::string error = std::string(e.what()) + " (--help lists the options)";
+    std::fprintf(stderr, "delpsc: %s\n", error.c_str());
+    // Option values are stored only once parsing succeeds: --report is looked up in argv.
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--report" && i + 1 < argc) global.report_path = argv[i + 1];
+      if (arg.starts_with("--report=")) global.report_path = arg.substr(9);
+    }
+    if (!global.report_path.empty()) {
+      final_report().add_json("exit_code", std::to_string(kBadInput));
+      final_report().add_json("error", json_string(error));
+      (void)final_report().write_json(global.report_path);
+    }
+    return kBadInput;
   }
   int code = kOk;
   std::string error;

@@ -269,6 +269,13 @@ expect 2 "NaN" -- mesh "$TMP/cube.off" --facet-angle nan -o "$TMP/nan.off"
 expect 2 "NaN" -- mesh "$TMP/cube.off" --angle nan -o "$TMP/nan.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices -50 -o "$TMP/neg.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices 18446744073709551616 -o "$TMP/neg.off"
+# Usage errors read like every other error ("delpsc: " first), and --report still gets its JSON
+# wherever it stands on the line; an unknown command is named with the list of commands.
+rm -f "$TMP/usage.json"
+expect 2 "delpsc: --facet-angle: Value 31 not in range" -- mesh "$TMP/cube.off" --facet-angle 31 -o "$TMP/x.off" --report "$TMP/usage.json"
+python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); sys.exit(not (r["exit_code"] == 2 and "facet-angle" in r["error"]))' \
+  "$TMP/usage.json" || fail "usage error: no JSON report"
+expect 2 "unknown command 'bogus'; the commands are info" -- bogus "$TMP/cube.off"
 
 # The memory a process may use includes its address-space limit: under `ulimit -v` of 3 GB a
 # size needing ~9.5 GB is refused up front instead of running until the allocator fails; a
