@@ -14,9 +14,10 @@
 
 namespace delpsc::app {
 
-/// Exit codes: 0 success; 1 the job ran but a check it was asked for failed, or an internal
-/// error; 2 bad input or bad usage (unreadable file, malformed model, impossible parameters).
-enum ExitCode : int { kOk = 0, kCheckFailed = 1, kBadInput = 2 };
+/// Exit codes: 0 success; 1 the job ran but stopped early (a cap) or a check it was asked for
+/// failed; 2 bad input or bad usage (unreadable file, malformed model, impossible parameters,
+/// a job larger than memory); 3 an internal error (a bug: please report it).
+enum ExitCode : int { kOk = 0, kCheckFailed = 1, kBadInput = 2, kInternalError = 3 };
 
 /// Options every subcommand understands.
 struct GlobalOptions {

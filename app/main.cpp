@@ -90,9 +90,9 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     error = "out of memory: the job needs more than this machine (or its limits) gives; a larger --size, or a "
             "--max-vertices cap, bounds a mesh's memory",
-    code = kCheckFailed;
+    code = kBadInput;  // the job as asked: like impossible parameters, not a run stopped early
   } catch (const std::exception& e) {
-    error = std::string("internal error: ") + e.what(), code = kCheckFailed;
+    error = std::string("internal error: ") + e.what(), code = kInternalError;
   }
   if (!error.empty()) std::fprintf(stderr, "delpsc: %s\n", error.c_str());
   // A report is written even when the job failed (exit_code and error say how), except when
