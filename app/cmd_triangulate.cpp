@@ -88,10 +88,22 @@ int run(const TriangulateOptions& o, const GlobalOptions& g) {
     const std::size_t k = o.remove;
     for (std::size_t i = 0; i < k; ++i) std::swap(vertices[i], vertices[i + rng() % (vertices.size() - i)]);
     std::size_t removed = 0;
+    std::string first_refusal, refusal;
     const auto t1 = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < k; ++i) removed += dt.remove(vertices[i]) ? 1 : 0;
+    for (std::size_t i = 0; i < k; ++i) {
+      if (dt.remove(vertices[i], nullptr, &refusal))
+        ++removed;
+      else if (first_refusal.empty())
+        first_refusal = refusal;
+    }
     const double remove_seconds = seconds_since(t1);
+    // Removal refuses to leave fewer than four affinely independent vertices: fewer than K
+    // removed is said, not only counted (--remove 999 of 1,000 removed 996, exit 0, silently).
+    if (removed < k && !g.quiet)
+      std::fprintf(stderr, "delpsc: warning: --remove %zu: %zu of them removed; the first refused: %s\n", k, removed,
+                   first_refusal.c_str());
     report("removed", removed);
+    report("remove_refused", k - removed);
     report("remove_seconds", remove_seconds);
     report("remove_microseconds_per_vertex", removed ? 1e6 * remove_seconds / double(removed) : 0.0);
     report("vertices_after_remove", dt.number_of_vertices());
@@ -123,6 +135,7 @@ Runner register_triangulate(CLI::App& app) {
   app.footer(
       "Prints key=value lines: points, dimension, vertices, hidden, finite_cells, seconds "
       "(insertion, spatial sort included), bytes_per_vertex, valid (--check), removed, "
+      "remove_refused (removals refused: they would leave fewer than four affinely independent vertices), "
       "remove_seconds, valid_after_remove (--remove).\n\n"
       "Examples:\n  delpsc triangulate cloud.bin --check\n"
       "  delpsc triangulate --generate uniform:1000000 --remove 10000 --check");

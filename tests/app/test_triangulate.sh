@@ -10,6 +10,11 @@ expect 0 "" -- triangulate --generate uniform:2000 --check
 expect 0 "" -- triangulate --generate weighted:3000 --check --remove 300 --seed 5
 [[ "$(value valid_after_remove)" == "true" ]] || fail "not valid after removals"
 [[ "$(value removed)" == "300" ]] || fail "removed $(value removed) of 300"
+[[ "$(value remove_refused)" == "0" ]] || fail "remove_refused=$(value remove_refused) of 300"
+# Removal stops at four affinely independent vertices: the rest are refused, counted and said.
+expect 0 "996 of them removed" -- triangulate --generate sphere:1000 --remove 999
+[[ "$(value removed)" == "996" && "$(value remove_refused)" == "3" ]] \
+  || fail "999 of 1000: removed=$(value removed) remove_refused=$(value remove_refused)"
 
 # A text file with a duplicate point and a weight: the lighter duplicate is hidden.
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1 0.5\n0 0 0 0.25\n' >"$TMP/pts.txt"
