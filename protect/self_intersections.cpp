@@ -1,6 +1,8 @@
 #include "self_intersections.h"
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
@@ -32,6 +34,97 @@ Sides sides(const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y, int firs
     if (kernel::orient3d(x[0], x[1], x[2], y[(first + k) % 3]) != side) return Sides::other;
   if (side != 0) return Sides::one_side;
   return kernel::collinear(x[0].data(), x[1].data(), x[2].data()) ? Sides::other : Sides::coplanar;
+}
+
+// A vertex of at least this many triangles is worth certifying as a flat fan (below).
+constexpr std::size_t kFanDegree = 16;
+
+/// Per vertex: whether its triangles all lie in one plane and, seen from the vertex, cover
+/// angular sectors that meet only along edges they share - so that any two of them sharing only
+/// this vertex meet only there, which the pair test below would find after 2 coplanar segment
+/// tests per pair. The pairs are what costs: a fan of d triangles around one vertex (a cap of a
+/// CAD cylinder, a convex polygon fanned by the reader) has d²/2 of them, all overlapping boxes
+/// (20,000 made the check run 50 s). O(d log d) exact tests per vertex of degree at least
+/// kFanDegree; others are never certified.
+std::vector<char> flat_fans(const Complex& complex) {
+  const std::size_t nv = complex.vertices.size();
+  std::vector<std::uint32_t> first(nv + 1, 0), around;
+  for (const auto& t : complex.triangles)
+    for (const std::uint32_t v : t) ++first[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  around.resize(first[nv]);
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
+      for (const std::uint32_t v : complex.triangles[t]) around[fill[v]++] = t;
+  }
+  std::vector<char> certified(nv, 0);
+  struct Sector {
+    std::uint32_t start, end;  // the other two vertices, counter-clockwise seen in the projection
+  };
+  std::vector<Sector> sectors;
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const std::size_t degree = first[v + 1] - first[v];
+    if (degree < kFanDegree) continue;
+    const double* c = complex.vertices[v].data();
+    const auto others = [&](std::uint32_t t) {
+      const auto& tri = complex.triangles[t];
+      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      return std::array<std::uint32_t, 2>{tri[(k + 1) % 3], tri[(k + 2) % 3]};
+    };
+    const auto point = [&](std::uint32_t u) { return complex.vertices[u].data(); };
+    const auto [p, q] = others(around[first[v]]);
+    // One plane: every vertex of the fan on the plane of its first triangle (exact).
+    bool flat = true;
+    for (std::uint32_t i = first[v]; i < first[v + 1] && flat; ++i)
+      for (const std::uint32_t u : others(around[i])) flat = kernel::orient3d(c, point(p), point(q), point(u)) == 0;
+    if (!flat) continue;
+    // A coordinate plane the fan's plane projects onto one to one: where the first triangle's
+    // projection is not flat (exact; some such plane exists for a triangle that is not flat).
+    int a = 0, b = 1;
+    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) a = 1, b = 2;
+    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) a = 0, b = 2;
+    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) continue;
+    const auto turn = [&](std::uint32_t x, std::uint32_t y) { return kernel::orient2d(c, point(x), point(y), a, b); };
+    sectors.clear();
+    for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
+      const auto [x, y] = others(around[i]);
+      sectors.push_back(turn(x, y) > 0 ? Sector{x, y} : Sector{y, x});
+    }
+    // Directions around v by angle from the first sector's start r: [0, pi) then [pi, 2 pi),
+    // each half ordered by orient2d (exact; within a half two directions differ by less than pi).
+    const std::uint32_t r = sectors[0].start;
+    const auto same_way = [&](std::uint32_t x) {  // x on r's ray (given collinear with v and r)
+      for (const int k : {a, b})
+        if (point(r)[k] != c[k]) return (point(x)[k] > c[k]) == (point(r)[k] > c[k]);
+      return false;
+    };
+    const auto half = [&](std::uint32_t x) {
+      const int o = turn(r, x);
+      return o > 0 || (o == 0 && same_way(x)) ? 0 : 1;
+    };
+    const auto before = [&](std::uint32_t x, std::uint32_t y) {
+      const int hx = half(x), hy = half(y);
+      return hx != hy ? hx < hy : turn(x, y) > 0;
+    };
+    std::sort(sectors.begin(), sectors.end(), [&](const Sector& s, const Sector& t) { return before(s.start, t.start); });
+    // Disjoint: consecutive starts strictly increasing; a sector ends at the next one's start
+    // vertex (a shared edge) or strictly before it; none wraps past r but the last, which then
+    // ends at r's own vertex.
+    bool disjoint = true;
+    for (std::size_t i = 0; i < sectors.size() && disjoint; ++i) {
+      const Sector& s = sectors[i];
+      const bool wraps = before(s.end, s.start);
+      if (i + 1 < sectors.size()) {
+        const Sector& next = sectors[i + 1];
+        disjoint = !wraps && before(s.start, next.start) && (s.end == next.start || before(s.end, next.start));
+      } else {
+        disjoint = !wraps || s.end == sectors[0].start;
+      }
+    }
+    certified[v] = disjoint;
+  }
+  return certified;
 }
 
 }  // namespace
@@ -123,6 +216,14 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
   };
   const double tolerance2 = tolerance * tolerance;
+  const std::vector<char> fan = max_pairs > 0 ? flat_fans(complex) : std::vector<char>{};
+  // Two triangles sharing exactly one vertex, a certified flat fan's centre: they meet only there.
+  const auto only_fan_centre = [&](const std::array<std::uint32_t, 3>& ia, const std::array<std::uint32_t, 3>& ib) {
+    std::uint32_t shared = 0, count = 0;
+    for (const std::uint32_t x : ia)
+      if (x == ib[0] || x == ib[1] || x == ib[2]) shared = x, ++count;
+    return count == 1 && fan[shared];
+  };
   // Each vertex is tested from one of its triangles only, its first: a triangle t near vertex v
   // pairs with every triangle of v (each box holds v), so with that one too, and no (v, t) is
   // tested twice (a CAD vertex has up to dozens of triangles, each pairing with t).
@@ -164,14 +265,20 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
         const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
         const auto& ia = complex.triangles[pair[0]];
         const auto& ib = complex.triangles[pair[1]];
+        // What this pair is asked, decided before the corners are read (a fan's pairs are most
+        // of the pairs, and need neither test).
+        const bool crossing = max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front())) &&
+                              !only_fan_centre(ia, ib);
+        bool owns = false;
+        for (int k = 0; near && k < 3; ++k) owns |= owner[ia[k]] == pair[0] || owner[ib[k]] == pair[1];
+        if (!crossing && !owns) return;
         const std::array<Vec3, 3> a = corners(pair[0]), b = corners(pair[1]);
-        if (near)
+        if (owns)
           for (int k = 0; k < 3; ++k) {
             if (owner[ia[k]] == pair[0]) near_vertex(ia[k], a[k], pair[1], b, ib);
             if (owner[ib[k]] == pair[1]) near_vertex(ib[k], b[k], pair[0], a, ia);
           }
-        if (max_pairs == 0 || (pairs.size() == max_pairs && !(pair < pairs.front()))) return;
-        if (!triangles_intersect_improperly(a, ia, b, ib)) return;
+        if (!crossing || !triangles_intersect_improperly(a, ia, b, ib)) return;
         pairs.push_back(pair);
         std::push_heap(pairs.begin(), pairs.end());
         if (pairs.size() > max_pairs) {
