@@ -382,6 +382,7 @@ Runner register_mesh(CLI::App& app) {
                  "the vertices the size alone needs, within two and twenty million and what 80% of memory holds at "
                  "1.4 KB each; a size needing more than ten million, or more than memory holds, is refused unless "
                  "this is given; 0: no limit)")
+      ->transform(count_in_any_notation())
       ->check(CLI::Range(0.0, 1e15));  // a negative or overflowing count wrapped to "unlimited"
   add_max_seconds_option(app, o->max_seconds,
                          "the mesh reached is still written, as with --max-vertices (nothing when the limit comes "

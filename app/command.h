@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -49,6 +50,23 @@ inline CLI::Validator range_not_nan(double lo, double hi) {
       },
       "", "not NaN");
   return CLI::Range(lo, hi) & not_nan;
+}
+
+/// For a count option: a whole number written in scientific or decimal-point notation ("1e6",
+/// "2.5e5", "300000.0") becomes its digits before CLI11 converts it (which reads integers only:
+/// "--max-vertices 1e15" was refused as "could not convert" beside a help text saying up to
+/// 1e+15). Anything else is left as written, for the conversion and the checks to refuse.
+inline CLI::Validator count_in_any_notation() {
+  return CLI::Validator(
+      [](std::string& text) {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && std::isfinite(x) && x >= 0 && x <= 9e15 && x == std::floor(x) &&
+            text.find_first_of(".eE") != std::string::npos)
+          text = std::to_string(static_cast<std::uint64_t>(x));
+        return std::string();
+      },
+      "", "count");
 }
 
 /// The model to read, the positional IN of every command that reads one.

@@ -269,6 +269,9 @@ expect 2 "NaN" -- mesh "$TMP/cube.off" --facet-angle nan -o "$TMP/nan.off"
 expect 2 "NaN" -- mesh "$TMP/cube.off" --angle nan -o "$TMP/nan.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices -50 -o "$TMP/neg.off"
 expect 2 "" -- mesh "$TMP/cube.off" --max-vertices 18446744073709551616 -o "$TMP/neg.off"
+# A count in scientific notation is a count (CLI11 alone refused "1e15" as "could not convert").
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% --max-vertices 1e15 -o "$TMP/sci.off"
+expect 2 "not in range" -- mesh "$TMP/cube.off" --size 10% --max-vertices 1e16 -o "$TMP/sci.off"
 # Usage errors read like every other error ("delpsc: " first), and --report still gets its JSON
 # wherever it stands on the line; an unknown command is named with the list of commands.
 rm -f "$TMP/usage.json"
