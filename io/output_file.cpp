@@ -37,15 +37,26 @@ void write_in_place(const std::string& path, std::string_view bytes) {
 
 void write_output_file(const std::string& path, std::string_view bytes) {
   struct stat st {};
-  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+  const bool exists = ::lstat(path.c_str(), &st) == 0;
+  // In place: what is no regular file, and a file with other hard links (a rename would cut them
+  // off: the other names would keep the old contents).
+  if (exists && (!S_ISREG(st.st_mode) || st.st_nlink > 1)) {
     write_in_place(path, bytes);
     return;
   }
+  // A fresh name: a run killed mid-write leaves its temporary file, and in a container the next
+  // run may have the same process id.
   static std::atomic<unsigned> counter{0};
-  const std::string temporary =
-      path + ".delpsc-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  std::string temporary;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    temporary = path + ".delpsc-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) break;
+  }
   if (fd < 0) throw Error(path + ": cannot open for writing");
+  // A file replaced keeps its permissions (a private 0600 report stays private).
+  if (exists) (void)::fchmod(fd, st.st_mode & 07777);
   const bool written = write_all(fd, bytes);
   const bool closed = ::close(fd) == 0;  // NFS and others report a full disk only here
   if (!written || !closed || ::rename(temporary.c_str(), path.c_str()) != 0) {

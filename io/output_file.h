@@ -10,9 +10,10 @@
 namespace delpsc::io {
 
 /// Writes `bytes` to `path`. A regular file (or none yet) is replaced atomically by rename(2)
-/// from `path`.delpsc-PID-N, created with the usual permissions (0666 less the umask) and
-/// removed on failure; anything else - a device such as /dev/stdout, a FIFO, a symbolic link -
-/// is written in place, as before. Throws io::Error naming the path ("cannot open for writing",
+/// from a fresh `path`.delpsc-PID-N, created with the usual permissions (0666 less the umask;
+/// a file replaced keeps its own) and removed on failure; anything else - a device such as
+/// /dev/stdout, a FIFO, a symbolic link, a file with other hard links - is written in place, as
+/// before. Throws io::Error naming the path ("cannot open for writing",
 /// "write failed (disk full?)"). O(bytes).
 void write_output_file(const std::string& path, std::string_view bytes);
 

@@ -68,6 +68,23 @@ TEST_CASE("a failed write keeps the old file and leaves no temporary one; a good
   struct stat st {};
   REQUIRE(stat(path.c_str(), &st) == 0);
   CHECK((st.st_mode & 0777) == (0666 & ~mask));
+  // A file replaced keeps its permissions; one with another hard link is written in place, so
+  // both names see the new contents.
+  REQUIRE(chmod(path.c_str(), 0600) == 0);
+  io::write_output_file(path, "private\n");
+  REQUIRE(stat(path.c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0600);
+  const std::string link = path + ".link";
+  std::filesystem::remove(link);
+  std::filesystem::create_hard_link(path, link);
+  io::write_output_file(path, "both names\n");
+  CHECK(test::read_file(link) == "both names\n");
+  std::filesystem::remove(link);
+  // Temporary files left by a killed run under this process id (the counter is below 10 here)
+  // do not block the next write.
+  for (int n = 0; n < 10; ++n) test::write_file(path + ".delpsc-" + std::to_string(getpid()) + "-" + std::to_string(n), "");
+  CHECK_NOTHROW(io::write_output_file(path, "again\n"));
+  for (int n = 0; n < 10; ++n) std::filesystem::remove(path + ".delpsc-" + std::to_string(getpid()) + "-" + std::to_string(n));
   std::filesystem::remove(path);
 
   // Not a regular file: written in place (a temporary file cannot be renamed onto a device).
