@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 #include <exception>
+#include <filesystem>
 #include <vector>
 
 #include "command.h"
@@ -37,36 +38,45 @@ int main(int argc, char** argv) {
   add("mesh", "Mesh a polygon model with DelPSC: protecting balls, then restricted Delaunay refinement", register_mesh);
   add("triangulate", "Build the 3D regular triangulation of a weighted point set", register_triangulate);
 
+  // A usage error as every other error: "delpsc: " first, exit 2, and the JSON report when
+  // --report is given. Option values are stored only once parsing succeeds, so --report is
+  // looked up in argv; it is written only where check_output_path allows and where it names no
+  // file given elsewhere on the line (a usage error must not overwrite the input with a report).
+  const auto usage_failure = [&](const std::string& error) {
+    std::fprintf(stderr, "delpsc: %s\n", error.c_str());
+    int at = -1;
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--report" && i + 1 < argc) global.report_path = argv[i + 1], at = i + 1;
+      if (arg.starts_with("--report=")) global.report_path = arg.substr(9), at = i;
+    }
+    if (global.report_path.empty() || global.report_path.starts_with("-")) return kBadInput;
+    try {
+      check_output_path(global.report_path, "--report");
+    } catch (const Failure&) {
+      return kBadInput;
+    }
+    std::error_code ec;
+    for (int i = 1; i < argc; ++i)
+      if (i != at && std::filesystem::equivalent(global.report_path, argv[i], ec)) return kBadInput;
+    final_report().add_json("exit_code", std::to_string(kBadInput));
+    final_report().add_json("error", json_string(error));
+    (void)final_report().write_json(global.report_path);
+    return kBadInput;
+  };
   // A first word that is no option and no command: say which commands there are (CLI11 said
   // only "A subcommand is required").
   if (argc > 1 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    if (std::none_of(commands.begin(), commands.end(), [&](const auto& c) { return c.first->get_name() == word; })) {
-      std::fprintf(stderr, "delpsc: unknown command '%s'; the commands are info, features, protect, mesh and "
-                           "triangulate (delpsc --help)\n", word.c_str());
-      return kBadInput;
-    }
+    if (std::none_of(commands.begin(), commands.end(), [&](const auto& c) { return c.first->get_name() == word; }))
+      return usage_failure("unknown command '" + word +
+                           "'; the commands are info, features, protect, mesh and triangulate (delpsc --help)");
   }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kBadInput;  // --help, --version
-    // Usage errors as every other error: "delpsc: " first, exit 2, and the JSON report when
-    // --report is given.
-    const std::string error = std::string(e.what()) + " (--help lists the options)";
-    std::fprintf(stderr, "delpsc: %s\n", error.c_str());
-    // Option values are stored only once parsing succeeds: --report is looked up in argv.
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--report" && i + 1 < argc) global.report_path = argv[i + 1];
-      if (arg.starts_with("--report=")) global.report_path = arg.substr(9);
-    }
-    if (!global.report_path.empty()) {
-      final_report().add_json("exit_code", std::to_string(kBadInput));
-      final_report().add_json("error", json_string(error));
-      (void)final_report().write_json(global.report_path);
-    }
-    return kBadInput;
+    return usage_failure(std::string(e.what()) + " (--help lists the options)");
   }
   int code = kOk;
   std::string error;
