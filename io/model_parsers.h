@@ -11,6 +11,9 @@ namespace delpsc::io::detail {
 void parse_off(std::string_view bytes, SoupBuilder& out);
 void parse_obj(std::string_view bytes, SoupBuilder& out);
 void parse_stl(std::string_view bytes, SoupBuilder& out);
+/// Whether the size of `bytes` is exactly 84 + 50 n for the count n a binary STL header holds:
+/// near-certain proof of a binary STL, whatever its free-form header starts with.
+bool stl_size_proves_binary(std::string_view bytes);
 void parse_ply(std::string_view bytes, SoupBuilder& out);
 
 /// Largest vertex count a soup can hold: indices are uint32.

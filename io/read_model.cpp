@@ -96,9 +96,12 @@ ReadResult read_model(const std::string& path) {
 ReadResult read_model_from_memory(std::string_view bytes, ModelFormat format, const std::string& name) {
   // Compressed data named like a model: say so, instead of a header or count error about the
   // compressed bytes (a gzipped .stl was refused for the triangle count it seemed to announce).
-  if (bytes.starts_with("\x1f\x8b"))
+  // (A binary STL's 80-byte header is free-form: one whose size proves it binary is read.)
+  const bool binary_stl = format == ModelFormat::stl && detail::stl_size_proves_binary(bytes);
+  if (!binary_stl && bytes.starts_with("\x1f\x8b"))
     throw Error(name + ": gzip-compressed data, not a model file: decompress it first (gunzip)");
-  if (bytes.starts_with("PK\x03\x04")) throw Error(name + ": a zip archive, not a model file: extract the model first");
+  if (!binary_stl && bytes.starts_with("PK\x03\x04"))
+    throw Error(name + ": a zip archive, not a model file: extract the model first");
   detail::SoupBuilder builder(name);
   // A UTF-8 byte-order mark, which some Windows editors put before any text: not part of an OFF
   // or OBJ file's content, nor of a PLY header's "ply" (STL decides for itself: a binary STL's

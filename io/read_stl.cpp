@@ -25,14 +25,18 @@ bool starts_with_solid(std::string_view bytes) {
 // Many binary exporters start the free-form header with "solid", so the keyword alone proves
 // nothing. A size of exactly 84 + 50 n is near-certain proof of binary; a NUL byte early on
 // proves it is not text.
-bool size_proves_binary(std::string_view bytes) {
+}  // namespace
+
+bool stl_size_proves_binary(std::string_view bytes) {
   if (bytes.size() < kHeaderBytes) return false;
   const auto n = load<std::uint32_t>(bytes.data() + 80, std::endian::little);
   return kHeaderBytes + kFacetBytes * std::uint64_t{n} == bytes.size();
 }
 
+namespace {
+
 bool is_binary(std::string_view bytes) {
-  if (size_proves_binary(bytes)) return true;
+  if (stl_size_proves_binary(bytes)) return true;
   if (!starts_with_solid(bytes)) return true;
   const std::string_view head = bytes.substr(0, 1024);
   return head.find('\0') != std::string_view::npos;
@@ -154,7 +158,7 @@ void parse_stl(std::string_view bytes, SoupBuilder& out) {
   // otherwise was read as binary and refused for the count its header seemed to announce. A
   // binary file whose size proves it binary is read as such whatever its header holds.
   constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  if (bytes.starts_with(kBom) && !size_proves_binary(bytes) && !is_binary(bytes.substr(kBom.size())))
+  if (bytes.starts_with(kBom) && !stl_size_proves_binary(bytes) && !is_binary(bytes.substr(kBom.size())))
     bytes.remove_prefix(kBom.size());
   if (is_binary(bytes))
     parse_binary(bytes, out);

@@ -129,10 +129,10 @@ bool SoupBuilder::add_vertex(double x, double y, double z) {
 
 namespace {
 
-/// Ear clipping is quadratic or worse: a convex polygon with more corners than this is fanned
-/// without the convexity test's help being needed, a concave one is clipped up to
-/// kMostCornersClippedConcave corners (~0.1 s) and refused beyond (its fan would overlap itself:
-/// a star-shaped 1,000-gon was refused as a self-intersecting model).
+/// Ear clipping is quadratic or worse: a convex polygon with more corners than this is fanned, a
+/// concave one clipped up to kMostCornersClippedConcave corners (~0.1-1 s; its fan would overlap
+/// itself: a star-shaped 1,000-gon was refused as a self-intersecting model) and fanned with a
+/// warning beyond.
 constexpr std::size_t kMostCornersClipped = 500;
 constexpr std::size_t kMostCornersClippedConcave = 5000;
 /// A triangle below this shape (add_polygon: about a 3° angle in a triangle of otherwise even
@@ -184,11 +184,19 @@ void SoupBuilder::add_polygon(std::span<const std::uint32_t> indices) {
   bool convex = true;
   for (std::size_t i = 0; i < n && convex; ++i) convex = turn(q[(i + n - 1) % n], q[i], q[(i + 1) % n]) >= 0;
   if (n > kMostCornersClipped && convex) return fan(v, soup_.triangles);
-  if (n > kMostCornersClippedConcave)
-    fail("", "polygon " + std::to_string(report_.polygons) + " has " + std::to_string(n) +
-                 " corners and is not convex: splitting it into triangles here stops at " +
-                 std::to_string(kMostCornersClippedConcave) + " corners (its fan would overlap itself); "
-                 "triangulate the model beforehand");
+  if (n > kMostCornersClippedConcave) {
+    // Fanned, as every polygon this large was: "not convex" here is a floating-point verdict, and
+    // corners along a straight side often turn by -1e-17 (a rotated square of 6,000 corners was
+    // refused for it). Where the polygon really is concave the fan overlaps itself, which the
+    // self-intersection check then finds exactly; the warning says why.
+    if (nonconvex_fanned_++ == 0)
+      report_.warnings.push_back("polygon " + std::to_string(report_.polygons) + " has " + std::to_string(n) +
+                                 " corners and does not look convex: fanned from its first corner (clipping stops "
+                                 "at " + std::to_string(kMostCornersClippedConcave) +
+                                 " corners); if the model is then refused as intersecting itself, triangulate "
+                                 "it beforehand");
+    return fan(v, soup_.triangles);
+  }
 
   // 4√3 area / (sum of squared sides): 1 for an equilateral triangle, 0 for a degenerate one.
   const auto shape = [&](std::size_t a, std::size_t b, std::size_t c) {

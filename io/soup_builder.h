@@ -65,6 +65,7 @@ class SoupBuilder {
   kernel::LargeVector<std::uint32_t> file_to_merged_;
   std::size_t flushed_to_zero_ = 0;        // coordinates below 2^-140 set to 0
   double largest_flushed_ = 0;             // the largest magnitude among them
+  std::size_t nonconvex_fanned_ = 0;       // polygons fanned though they look concave
   std::size_t first_too_large_ = SIZE_MAX;  // file index of the first vertex beyond 2^140
   // Open addressing, linear probing: slot = merged vertex index + 1, 0 = empty. Kept at most half
   // full. Flat arrays beat std::unordered_map by several times on millions of STL corners.
