@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/get-cgal-data.sh >/dev/null || echo "delpsc: libcgal-demo models unavailable; real-model tests will skip" >&2
+bash scripts/require-cgal-data.sh
 jobs=$(nproc)
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
   -DDELPSC_SANITIZE=ON -DDELPSC_BUILD_BENCH=OFF -DDELPSC_WITH_CGAL=OFF >/dev/null
