@@ -1,9 +1,9 @@
 // The delpsc command: one program, one subcommand per job (see README and `delpsc --help`).
 #include <algorithm>
 #include <cstdio>
-#include <string>
 #include <exception>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "command.h"

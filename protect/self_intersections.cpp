@@ -8,6 +8,8 @@
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/kernel/predicates.h>
 
+#include "complex_build.h"
+
 namespace delpsc::protect {
 
 namespace {
@@ -48,13 +50,14 @@ constexpr std::size_t kFanDegree = 16;
 /// kFanDegree; others are never certified.
 std::vector<char> flat_fans(const Complex& complex) {
   const std::size_t nv = complex.vertices.size();
-  std::vector<std::uint32_t> first(nv + 1, 0), around;
+  // Each vertex's triangles, in one flat array (offsets as the complex's builders make them).
+  kernel::LargeVector<std::uint32_t> triangles_at(nv, 0);
   for (const auto& t : complex.triangles)
-    for (const std::uint32_t v : t) ++first[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-  around.resize(first[nv]);
+    for (const std::uint32_t v : t) ++triangles_at[v];
+  const kernel::LargeVector<std::uint32_t> first = detail::offsets_from_counts(triangles_at);
+  kernel::LargeVector<std::uint32_t> around(first.back());
   {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    kernel::LargeVector<std::uint32_t> fill(first.begin(), first.end() - 1);
     for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
       for (const std::uint32_t v : complex.triangles[t]) around[fill[v]++] = t;
   }
