@@ -54,14 +54,25 @@ void write_output_file(const std::string& path, std::string_view bytes) {
     fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0 && errno != EEXIST) break;
   }
+  if (fd < 0 && errno == ENAMETOOLONG) {  // the target's name fits, the temporary one's does not
+    write_in_place(path, bytes);
+    return;
+  }
   if (fd < 0) throw Error(path + ": cannot open for writing");
   // A file replaced keeps its permissions (a private 0600 report stays private).
   if (exists) (void)::fchmod(fd, st.st_mode & 07777);
   const bool written = write_all(fd, bytes);
   const bool closed = ::close(fd) == 0;  // NFS and others report a full disk only here
-  if (!written || !closed || ::rename(temporary.c_str(), path.c_str()) != 0) {
+  if (!written || !closed) {
     ::unlink(temporary.c_str());
-    throw Error(path + (written && closed ? ": cannot replace it" : ": write failed (disk full?)"));
+    throw Error(path + ": write failed (disk full?)");
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+    // A target that cannot be renamed onto (a bind-mounted file: EBUSY) is written in place.
+    const int why = errno;
+    ::unlink(temporary.c_str());
+    if (why != EBUSY && why != EXDEV) throw Error(path + ": cannot replace it");
+    write_in_place(path, bytes);
   }
 }
 

@@ -13,7 +13,8 @@ namespace delpsc::io {
 /// from a fresh `path`.delpsc-PID-N, created with the usual permissions (0666 less the umask;
 /// a file replaced keeps its own) and removed on failure; anything else - a device such as
 /// /dev/stdout, a FIFO, a symbolic link, a file with other hard links - is written in place, as
-/// before. Throws io::Error naming the path ("cannot open for writing",
+/// before, and so is a target whose temporary name would be too long or that cannot be renamed
+/// onto (a bind-mounted file). Throws io::Error naming the path ("cannot open for writing",
 /// "write failed (disk full?)"). O(bytes).
 void write_output_file(const std::string& path, std::string_view bytes);
 
