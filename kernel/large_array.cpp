@@ -1,5 +1,7 @@
 #include "large_array.h"
 
+#include "huge_page_policy.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -21,14 +23,15 @@ std::size_t rounded_to_huge_pages(std::size_t bytes) {
   return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
 }
 
-// `bytes` (a multiple of kHugePageBytes) aligned to a huge page and advised for THP.
+// `bytes` (a multiple of kHugePageBytes) aligned to a huge page, and advised for THP where that
+// makes first touches cheaper (huge_page_policy.h).
 void* huge_page_block(std::size_t bytes) {
   // aligned_alloc's size must be a multiple of the alignment: it is.
   void* p = std::aligned_alloc(kHugePageBytes, bytes);
   if (p == nullptr) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   // Advice only: if the kernel refuses (THP off), the block works with base pages.
-  (void)madvise(p, bytes, MADV_HUGEPAGE);
+  if (huge_pages_advised()) (void)madvise(p, bytes, MADV_HUGEPAGE);
 #endif
   return p;
 }

@@ -3,17 +3,19 @@
 //
 // Why: these arrays are read at random (a walk or a cavity search jumps across the cell array),
 // and with 4 KiB pages a mesher run of 50,000 vertices touches ~20,000 pages. Each first touch is
-// a page fault, which on the virtual machines we run on costs several microseconds of system
-// time, and each random read risks a TLB miss. Blocks above 1 MiB are therefore aligned to
-// 2 MiB and advised for transparent huge pages (Linux madvise(MADV_HUGEPAGE); honoured when the
-// system's THP mode is "always" or "madvise", as on our machines; elsewhere a no-op): on the
+// a page fault, which on some virtual machines costs several microseconds of system time, and
+// each random read risks a TLB miss. Blocks above 1 MiB are therefore aligned to 2 MiB and, where
+// huge_page_policy.h finds it worthwhile, advised for transparent huge pages (Linux
+// madvise(MADV_HUGEPAGE); honoured when the system's THP mode is "always" or "madvise"): on the
 // cube at 0.456% of the diagonal, faults fell from ~21,000 to ~4,000 and the CPU time of the
-// whole pipeline by ~40%, user time as much as system time (BENCHMARKS.md, "Huge pages").
+// whole pipeline by ~40%, user time as much as system time (BENCHMARKS.md, "Huge pages"). Not on
+// a virtual machine that reports its free memory to the host, where a fresh huge page costs
+// five times what its base pages do (BENCHMARKS.md, "Session 29").
 //
-// Blocks from 4 KiB to 1 MiB come from a pool of 2 MiB huge-page chunks, so that the many
-// arrays of a small run (a few thousand vertices: each array tens of KiB) do not fault in their
-// pages one by one: on the virtual machines we run on a 4 KiB fault costs ~11 us, a whole 2 MiB
-// huge page ~160 us. The pool keeps one free list per power-of-two size and reuses freed blocks
+// Blocks from 4 KiB to 1 MiB come from a pool of 2 MiB chunks (huge pages where advised, as
+// above), so that the many arrays of a small run (a few thousand vertices: each array tens of
+// KiB) do not fault in their pages one by one: on the virtual machines of session 20 a 4 KiB
+// fault cost ~11 us, a whole 2 MiB huge page ~160 us. The pool keeps one free list per power-of-two size and reuses freed blocks
 // (a growing vector's old blocks serve the next one); it returns its chunks to the system when no
 // pooled block is live, but one; a forked child starts an empty pool, as writing into the
 // parent's chunks would copy them page by page (BENCHMARKS.md, "Session 20: a pool for

@@ -1,0 +1,60 @@
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <delpsc/kernel/huge_page_policy.h>
+
+#include <unistd.h>
+
+using namespace delpsc;
+
+namespace {
+
+// A fake /sys/bus/virtio/devices under a fresh temporary directory, removed at the end.
+struct FakeVirtio {
+  std::filesystem::path root;
+  FakeVirtio() {
+    static int made = 0;
+    root = std::filesystem::temp_directory_path() /
+           ("delpsc-virtio-" + std::to_string(::getpid()) + "-" + std::to_string(made++));
+    std::filesystem::remove_all(root);
+    std::filesystem::create_directories(root);
+  }
+  ~FakeVirtio() { std::filesystem::remove_all(root); }
+  void device(const std::string& name, const std::string& id, const std::string& features) const {
+    std::filesystem::create_directories(root / name);
+    std::ofstream(root / name / "device") << id << "\n";
+    std::ofstream(root / name / "features") << features << "\n";
+  }
+};
+
+}  // namespace
+
+TEST_CASE("huge pages: not where a balloon reports free memory to the host, unless overridden") {
+  const FakeVirtio sys;
+  // No virtio devices at all (bare metal, or another hypervisor): worthwhile.
+  CHECK(kernel::huge_pages_worthwhile(std::nullopt, sys.root));
+  CHECK(kernel::huge_pages_worthwhile(std::nullopt, sys.root / "absent"));
+  // A network device with bit 5 set is no balloon; a balloon without bit 5 does not report.
+  sys.device("virtio0", "0x0001", "01100101000000000000000000000000");
+  sys.device("virtio1", "0x0005", "01100001000000000000000000000000");
+  CHECK(kernel::huge_pages_worthwhile(std::nullopt, sys.root));
+  // A balloon that negotiated free page reporting (the machines of BENCHMARKS.md, session 29).
+  sys.device("virtio2", "0x0005", "01100101000000000000000000000000");
+  CHECK_FALSE(kernel::huge_pages_worthwhile(std::nullopt, sys.root));
+  // DELPSC_HUGE_PAGES decides either way; any other value decides nothing.
+  CHECK(kernel::huge_pages_worthwhile("1", sys.root));
+  CHECK_FALSE(kernel::huge_pages_worthwhile("0", sys.root));
+  CHECK_FALSE(kernel::huge_pages_worthwhile("yes", sys.root));
+  CHECK_FALSE(kernel::huge_pages_worthwhile("", sys.root));
+  FakeVirtio bare;
+  CHECK_FALSE(kernel::huge_pages_worthwhile("0", bare.root));
+  CHECK(kernel::huge_pages_worthwhile("2", bare.root));
+}
+
+TEST_CASE("huge pages: the process-wide answer is stable") {
+  const bool first = kernel::huge_pages_advised();
+  CHECK(kernel::huge_pages_advised() == first);
+}
