@@ -1,6 +1,8 @@
 // `delpsc info`: what a model is made of and what is wrong with it, before meshing.
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/folds.h>
+#include <delpsc/protect/self_intersections.h>
 #include <charconv>
 #include <limits>
 #include <stdexcept>
@@ -8,6 +10,7 @@
 #include "command.h"
 #include "input_defects.h"
 #include "model_input.h"
+#include "time_limit.h"
 
 namespace delpsc::app {
 
@@ -16,9 +19,11 @@ namespace {
 struct InfoOptions {
   std::string input;
   double angle = 60;
+  double max_seconds = 0;  // 0: no limit
 };
 
 int run(const InfoOptions& o, const GlobalOptions& g) {
+  const TimeLimit time_limit(o.max_seconds);
   const io::ReadResult model = load_model(o.input, g);
   const auto& soup = model.soup;
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -55,7 +60,12 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
-  const std::size_t crossing = protect::find_self_intersections(complex, kSelfIntersectionsCounted).size();
+  // The one step whose time is not linear in the model (pairs of overlapping boxes: a fan of d
+  // triangles has d²/2 of them), hence the only one --max-seconds polls.
+  const protect::InputDefects defects =
+      protect::find_input_defects(complex, kernel::AabbTree(complex.vertices, complex.triangles),
+                                  kSelfIntersectionsCounted, 0, time_limit.poll());
+  const std::size_t crossing = defects.crossing.size();
   report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
   // The sharpest edge between two triangles (input_defects.h).
   const auto sharpest = sharpest_fold(complex);
@@ -77,6 +87,11 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
                  "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex (at --angle %g); "
                  "`delpsc mesh` refuses such a model\n",
                  o.input.c_str(), complex.pinches.size(), o.angle);
+  report("stopped", defects.stopped ? "max-seconds" : "no");
+  if (defects.stopped)
+    throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() +
+                                    " while checking the model for self-intersections: self_intersections counts "
+                                    "only the pairs found before"};
   return kOk;
 }
 
@@ -87,11 +102,14 @@ Runner register_info(CLI::App& app) {
   add_model_input(app, o->input);
   app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
       ->check(range_not_nan(0.0, 180.0));
+  add_max_seconds_option(app, o->max_seconds,
+                         "the check for self-intersections, the one step that can take long (fans of thousands "
+                         "of triangles), ends there with the pairs found so far");
   app.footer(
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
       "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
-      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings.\n\nExample:\n  delpsc info part.stl");
+      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

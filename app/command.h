@@ -36,6 +36,9 @@ struct Failure {
 /// Prints one "key=value" line of the final report on stdout and records it for --report
 /// (report.h).
 inline void report(const char* key, const std::string& value) { final_report().add(key, value); }
+// A string literal would otherwise take the bool overload (a pointer converts to bool before it
+// converts to std::string) and print "true": `stopped=true` from info was caught by its test.
+inline void report(const char* key, const char* value) { final_report().add(key, std::string(value)); }
 inline void report(const char* key, double value) { final_report().add(key, value); }
 inline void report(const char* key, long long value) { final_report().add(key, value); }
 inline void report(const char* key, std::size_t value) { final_report().add(key, value); }

@@ -33,6 +33,25 @@ write_crossing() {
   printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0.2 0.2 -0.5\n0.3 0.3 0.5\n0.9 0.1 0.5\n3 0 1 2\n3 3 4 5\n' >"$1"
 }
 
+# write_fan_cylinder FILE N: a closed cylinder of N rim points whose caps are fans of N triangles
+# around their centres: every two of a cap's triangles share the centre and their boxes overlap
+# (N²/2 pairs each), which makes the check for self-intersections the long step of a run.
+write_fan_cylinder() {
+  python3 - "$1" "$2" <<'FAN'
+import math, sys
+n = int(sys.argv[2])
+v = [(math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n), z) for z in (0.0, 1.0) for i in range(n)]
+v += [(0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
+f = []
+for i in range(n):
+    j = (i + 1) % n
+    f += [(i, j, n + j), (i, n + j, n + i), (2 * n, j, i), (2 * n + 1, n + i, n + j)]
+with open(sys.argv[1], "w") as out:
+    out.write(f"OFF\n{len(v)} {len(f)} 0\n" + "".join(f"{x!r} {y!r} {z!r}\n" for x, y, z in v)
+              + "".join(f"3 {a} {b} {c}\n" for a, b, c in f))
+FAN
+}
+
 # write_far_cube FILE: the unit cube moved by (1e9, 2e9, -3e9), exactly (integers below 2^53): a
 # model far from the origin, which the commands mesh next to it and write back in its frame.
 write_far_cube() {

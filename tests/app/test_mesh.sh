@@ -425,19 +425,7 @@ got=$?
 # triangles around their centres (every two of a cap's triangles share the centre, their boxes
 # overlap: 3.6e7 pairs) stops there with exit 1 and writes nothing. The limit has passed by the
 # check's first poll (reading takes longer), so the stop comes there on any machine.
-python3 - "$TMP/fan_cylinder.off" <<'FAN'
-import math, sys
-n = 6000
-v = [(math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n), z) for z in (0.0, 1.0) for i in range(n)]
-v += [(0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
-f = []
-for i in range(n):
-    j = (i + 1) % n
-    f += [(i, j, n + j), (i, n + j, n + i), (2 * n, j, i), (2 * n + 1, n + i, n + j)]
-with open(sys.argv[1], "w") as out:
-    out.write(f"OFF\n{len(v)} {len(f)} 0\n" + "".join(f"{x!r} {y!r} {z!r}\n" for x, y, z in v)
-              + "".join(f"3 {a} {b} {c}\n" for a, b, c in f))
-FAN
+write_fan_cylinder "$TMP/fan_cylinder.off" 6000
 rm -f "$TMP/fan_out.off"
 expect 1 "while checking the model for self-intersections; nothing written" -- mesh "$TMP/fan_cylinder.off" --size 5% --max-seconds 0.001 -o "$TMP/fan_out.off"
 [[ ! -e "$TMP/fan_out.off" ]] || fail "a run stopped in the input check wrote a mesh"
