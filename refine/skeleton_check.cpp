@@ -102,7 +102,7 @@ std::pair<int, std::size_t> cut_open_topology(const io::SurfaceMesh& mesh, const
     return corner(i, v[0] == x ? 0 : v[1] == x ? 1 : 2);
   };
   std::size_t edges = 0;
-  Array<std::pair<std::size_t, std::size_t>> cut_runs;  // [begin, end) of uses, cut edges
+  Array<std::pair<std::size_t, std::size_t>> cut_runs;  // [begin, end) of sorted sides, cut edges
   for (std::size_t b = 0; b < sorted.sides.size();) {
     const std::size_t e = sorted.run_end(b);
     const Edge shared = sorted.edge_of(b);
