@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 
 namespace delpsc::kernel {
 
@@ -477,8 +478,33 @@ void AabbTree::triangles_in_box(const Box3& box, std::vector<std::uint32_t>& out
 }
 
 void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f,
-                                         double margin) const {
+                                         double margin, std::span<const std::uint32_t> group) const {
   if (nodes_.empty()) return;
+  // Each node's group when all its triangles share one (kNoGroup or kMixed otherwise), children
+  // before parents: a child's index is above its parent's.
+  constexpr std::uint32_t kMixed = kNoGroup - 1;
+  const bool grouped = !group.empty();
+  if (grouped && group.size() < triangle_ids_.size())
+    throw std::invalid_argument("AabbTree::for_each_overlapping_pair: fewer groups than triangles");
+  std::vector<std::uint32_t> node_group(grouped ? nodes_.size() : 0);
+  for (std::size_t i = node_group.size(); i-- > 0;) {
+    const Node& n = nodes_[i];
+    std::uint32_t g;
+    if (n.count > 0) {
+      g = group[triangle_ids_[n.first_or_right]];
+      for (std::uint32_t s = 1; s < n.count; ++s)
+        if (group[triangle_ids_[n.first_or_right + s]] != g) g = kMixed;
+    } else {
+      g = node_group[i + 1] == node_group[n.first_or_right] ? node_group[i + 1] : kMixed;
+    }
+    node_group[i] = g;
+  }
+  const auto one_group = [&](std::uint32_t i, std::uint32_t j) {
+    return grouped && node_group[i] < kMixed && node_group[i] == node_group[j];
+  };
+  const auto report = [&](std::uint32_t a, std::uint32_t b) {
+    if (!grouped || group[a] == kNoGroup || group[a] != group[b]) f(a, b);
+  };
   // A negative or NaN margin would shrink or void every box and drop pairs that overlap.
   if (!(margin > 0)) margin = 0;
   // Two boxes each grown by the margin overlap iff one overlaps the other grown by twice it.
@@ -505,13 +531,14 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
   while (!stack.empty()) {
     const auto [i, j] = stack.back();
     stack.pop_back();
+    if (one_group(i, j)) continue;
     const Node &a = nodes_[i], &b = nodes_[j];
     if (i == j) {
       if (is_leaf(i)) {
         const Box3* boxes = boxes_of + a.first_or_right;
         for (std::uint32_t s = 0; s < a.count; ++s)
           for (std::uint32_t t = s + 1; t < a.count; ++t)
-            if (boxes[s].overlaps(boxes[t])) f(triangle_ids_[a.first_or_right + s], triangle_ids_[a.first_or_right + t]);
+            if (boxes[s].overlaps(boxes[t])) report(triangle_ids_[a.first_or_right + s], triangle_ids_[a.first_or_right + t]);
         continue;
       }
       const auto [l, r] = children(i);
@@ -525,7 +552,7 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
       const Box3* boxes_b = boxes_of + b.first_or_right;
       for (std::uint32_t s = 0; s < a.count; ++s)
         for (std::uint32_t t = 0; t < b.count; ++t)
-          if (boxes_a[s].overlaps(boxes_b[t])) f(triangle_ids_[a.first_or_right + s], triangle_ids_[b.first_or_right + t]);
+          if (boxes_a[s].overlaps(boxes_b[t])) report(triangle_ids_[a.first_or_right + s], triangle_ids_[b.first_or_right + t]);
       continue;
     }
     // Descend the inner node (the larger one when both are): its children against the other.

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 #include <delpsc/kernel/aabb_tree.h>
@@ -370,8 +372,9 @@ TEST_CASE("box query equals brute force on bounding boxes") {
 }
 
 TEST_CASE("overlapping pairs equal brute force, each pair once") {
-  // margin: each box grown by it (the brute force grows them the same way, in double).
-  const auto check = [](const Soup& s, double margin = 0) {
+  // margin: each box grown by it (the brute force grows them the same way, in double). group:
+  // pairs within one group (not kNoGroup) left out, on both sides.
+  const auto check = [](const Soup& s, double margin = 0, std::span<const std::uint32_t> group = {}) {
     const AabbTree tree(s.vertices, s.triangles);
     std::vector<std::array<std::uint32_t, 2>> got;
     tree.for_each_overlapping_pair(
@@ -379,7 +382,7 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
           CHECK(a != b);
           got.push_back({std::min(a, b), std::max(a, b)});
         },
-        margin);
+        margin, group);
     const std::size_t reported = got.size();
     std::sort(got.begin(), got.end());
     got.erase(std::unique(got.begin(), got.end()), got.end());
@@ -393,7 +396,8 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
     std::vector<std::array<std::uint32_t, 2>> want;
     for (std::uint32_t a = 0; a < boxes.size(); ++a)
       for (std::uint32_t b = a + 1; b < boxes.size(); ++b)
-        if (boxes[a].overlaps(boxes[b])) want.push_back({a, b});
+        if (boxes[a].overlaps(boxes[b]) && (group.empty() || group[a] == AabbTree::kNoGroup || group[a] != group[b]))
+          want.push_back({a, b});
     CHECK(got == want);
     return want.size();
   };
@@ -408,6 +412,22 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
   const std::size_t touching = check(spread);
   CHECK(check(spread, 0.01) > touching + 100);
   CHECK(check(grid_soup(20), 0.6) > check(grid_soup(20)));  // the next ring, 1 apart
+  // Groups: spatial ones (whole subtrees of one group are skipped), scattered ones (only leaf
+  // pairs), and kNoGroup mixed in; every triangle in one group leaves no pair at all.
+  const Soup dense = random_soup(rng, 1500, 0.05);
+  std::vector<std::uint32_t> by_region(dense.triangles.size()), scattered(dense.triangles.size()),
+      single(dense.triangles.size(), 7);
+  for (std::uint32_t t = 0; t < dense.triangles.size(); ++t) {
+    by_region[t] = dense.vertices[dense.triangles[t][0]].x() < 0.5 ? 1 : AabbTree::kNoGroup;
+    scattered[t] = t % 3 == 0 ? AabbTree::kNoGroup : t % 5;
+  }
+  const std::size_t all = check(dense);
+  CHECK(check(dense, 0, by_region) < all);
+  CHECK(check(dense, 0, scattered) < all);
+  CHECK(check(dense, 0, single) == 0);
+  CHECK_THROWS_AS(AabbTree(dense.vertices, dense.triangles).for_each_overlapping_pair(
+                      [](std::uint32_t, std::uint32_t) {}, 0, std::span<const std::uint32_t>(single).first(10)),
+                  std::invalid_argument);
   // A negative or NaN margin counts as 0: no overlapping pair is dropped.
   const AabbTree tree(spread.vertices, spread.triangles);
   for (const double bad : {-0.01, std::numeric_limits<double>::quiet_NaN()}) {
