@@ -60,8 +60,9 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
-  // The one step whose time is not linear in the model (pairs of overlapping boxes: a fan of d
-  // triangles has d²/2 of them), hence the only one --max-seconds polls.
+  // The one step whose time is not linear in the model (pairs of overlapping boxes: d triangles
+  // around a cone's apex make d²/2 of them; flat fans are settled at once), hence the only one
+  // --max-seconds polls.
   const protect::InputDefects defects =
       protect::find_input_defects(complex, kernel::AabbTree(complex.vertices, complex.triangles),
                                   kSelfIntersectionsCounted, 0, time_limit.poll());
@@ -103,8 +104,9 @@ Runner register_info(CLI::App& app) {
   app.add_option("--angle", o->angle, "Feature angle in degrees for the complex counts")
       ->check(range_not_nan(0.0, 180.0));
   add_max_seconds_option(app, o->max_seconds,
-                         "the check for self-intersections, the one step that can take long (fans of thousands "
-                         "of triangles), ends there with the pairs found so far");
+                         "the check for self-intersections, the one step that can take long (thousands of "
+                         "triangles whose boxes all overlap, as around a cone's apex), ends there with the "
+                         "pairs found so far");
   app.footer(
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
