@@ -35,7 +35,8 @@ write_crossing() {
 
 # write_fan_cylinder FILE N: a closed cylinder of N rim points whose caps are fans of N triangles
 # around their centres: every two of a cap's triangles share the centre and their boxes overlap
-# (N²/2 pairs each), which makes the check for self-intersections the long step of a run.
+# (N²/2 pairs each, which the check for self-intersections settles at once per flat fan, and
+# tested one by one before), a model of 4N triangles that takes a while to read.
 write_fan_cylinder() {
   python3 - "$1" "$2" <<'FAN'
 import math, sys

@@ -421,10 +421,9 @@ got=$?
 [[ "$(cat "$TMP/full.off")" == "previous" ]] || fail "a failed write changed the previous file"
 [[ -z "$(ls "$TMP" | grep 'full.off.delpsc-')" ]] || fail "a failed write left a temporary file"
 
-# The input check honours --max-seconds: a closed cylinder whose caps are fans of 6,000
-# triangles around their centres (every two of a cap's triangles share the centre, their boxes
-# overlap: 3.6e7 pairs) stops there with exit 1 and writes nothing. The limit has passed by the
-# check's first poll (reading takes longer), so the stop comes there on any machine.
+# The input check honours --max-seconds: on a closed cylinder whose caps are fans of 6,000
+# triangles it stops there with exit 1 and writes nothing. The limit has passed by the check's
+# first poll (reading 24,000 triangles takes longer), so the stop comes there on any machine.
 write_fan_cylinder "$TMP/fan_cylinder.off" 6000
 rm -f "$TMP/fan_out.off"
 expect 1 "while checking the model for self-intersections; nothing written" -- mesh "$TMP/fan_cylinder.off" --size 5% --max-seconds 0.001 -o "$TMP/fan_out.off"
