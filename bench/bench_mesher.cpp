@@ -3,12 +3,14 @@
 // and from the balls alone (the paper's start, MesherOptions::initial_sample = false); and the
 // initial sample's own parts: the domain's candidates and their selection; the whole pipeline
 // at 2% (pipeline/), where the costs per input triangle weigh; the output's orientation
-// (orient/); and the input checks `delpsc mesh` runs before meshing (input_checks/: the tree,
-// crossing triangles, near contacts), which the pipeline leaves out. Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
+// (orient/); the input checks `delpsc mesh` runs before meshing (input_checks/: the tree,
+// crossing triangles, near contacts; also on a cylinder with fanned caps), which the pipeline
+// leaves out; and the G1 check it runs after (skeleton_check/). Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
 // models.
 //   cmake --build build --target bench_mesher && build/bin/bench_mesher
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -25,6 +27,7 @@
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
 #include <delpsc/refine/protected_balls.h>
+#include <delpsc/refine/skeleton_check.h>
 #include <delpsc/refine/triangle_orientation.h>
 
 #include "mesh_pipeline.h"
@@ -130,17 +133,22 @@ void pipeline(benchmark::State& state, const Model& m, double relative) {
       benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// orient_triangles on the mesh's own output at 0.5% (meshed once, before the timing), as
-// Mesher::output() calls it: the triangles copied and oriented again each iteration (the copy is
-// a few percent of it).
-void orient(benchmark::State& state, const Model& m) {
+// The model's mesh at 0.5%, made before a timing that works on it.
+io::SurfaceMesh mesh_of(const Model& m) {
   protect::BallSet set = *m.balls;
   refine::ProtectedBalls balls(set);
   refine::MesherOptions options;
   options.facet_size = m.lambda;
   refine::Mesher mesher(*m.domain, balls, options);
   mesher.run();
-  const io::SurfaceMesh mesh = mesher.output();
+  return mesher.output();
+}
+
+// orient_triangles on the mesh's own output at 0.5% (meshed once, before the timing), as
+// Mesher::output() calls it: the triangles copied and oriented again each iteration (the copy is
+// a few percent of it).
+void orient(benchmark::State& state, const Model& m) {
+  const io::SurfaceMesh mesh = mesh_of(m);
   for (auto _ : state) {
     kernel::LargeVector<std::array<std::uint32_t, 3>> triangles = mesh.triangles;
     benchmark::DoNotOptimize(refine::orient_triangles(mesh.vertices, triangles));
@@ -162,7 +170,48 @@ void input_checks(benchmark::State& state, const Model& m) {
   state.counters["triangles"] = static_cast<double>(complex.triangles.size());
 }
 
+// The G1 and per-patch topology check `delpsc mesh` runs on every output (for its report), on
+// the mesh at 0.5%, with the command's tolerance.
+void skeleton_check(benchmark::State& state, const Model& m) {
+  const io::SurfaceMesh mesh = mesh_of(m);
+  const double tolerance = 1e-9 * m.domain->bounding_box().diagonal();
+  for (auto _ : state) benchmark::DoNotOptimize(refine::check_skeleton(mesh, *m.domain, tolerance));
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+}
+
+// input_checks on a closed cylinder whose caps are fans of `rim` triangles around their centres
+// (tests/app/lib.sh's write_fan_cylinder): rim²/2 box-overlapping pairs in each cap, which a
+// certified flat fan spares (protect/self_intersections.h).
+void input_checks_fan_cylinder(benchmark::State& state) {
+  const auto n = static_cast<std::uint32_t>(state.range(0));
+  io::TriangleSoup soup;
+  for (const double z : {0.0, 1.0})
+    for (std::uint32_t i = 0; i < n; ++i)
+      soup.vertices.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), z);
+  soup.vertices.emplace_back(0, 0, 0);
+  soup.vertices.emplace_back(0, 0, 1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    soup.triangles.push_back({i, j, n + j});
+    soup.triangles.push_back({i, n + j, n + i});
+    soup.triangles.push_back({2 * n, j, i});
+    soup.triangles.push_back({2 * n + 1, n + i, n + j});
+  }
+  const refine::PolygonDomain domain(protect::build_complex(soup));
+  const protect::Complex& complex = domain.complex();
+  const double tolerance = 1e-9 * domain.bounding_box().diagonal();
+  for (auto _ : state) {
+    const kernel::AabbTree tree(complex.vertices, complex.triangles);
+    benchmark::DoNotOptimize(protect::find_input_defects(complex, tree, 100, tolerance));
+  }
+  state.counters["triangles"] = static_cast<double>(complex.triangles.size());
+}
+
 const int registered = [] {
+  benchmark::RegisterBenchmark("input_checks/fan_cylinder", input_checks_fan_cylinder)
+      ->Arg(5000)
+      ->Arg(20000)
+      ->Unit(benchmark::kMillisecond);
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/paper").c_str(), mesh, m, false)->Unit(benchmark::kMillisecond);
@@ -171,6 +220,7 @@ const int registered = [] {
     benchmark::RegisterBenchmark(("pipeline/" + m.name + "/2%").c_str(), pipeline, m, 0.02)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("orient/" + m.name).c_str(), orient, m)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("input_checks/" + m.name).c_str(), input_checks, m)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("skeleton_check/" + m.name).c_str(), skeleton_check, m)->Unit(benchmark::kMillisecond);
   }
   return 0;
 }();
