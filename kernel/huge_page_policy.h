@@ -5,10 +5,11 @@
 // machines a 2 MiB huge page costs one fault and one clear instead of 512 faults, and fewer TLB
 // misses after (the cube at 0.456%: -40% CPU time, BENCHMARKS.md "Session 18"). On a virtual
 // machine whose balloon device reports free memory to the host (virtio-balloon's free page
-// reporting, feature bit 5), the guest hands out such reported memory again without the host
-// backing it, and clearing a fresh huge page there made the host fault it in 4 KiB at a time:
-// 2.0-3.3 ms a MiB against 0.4 ms a MiB for base pages, measured on our CI machines, where a
-// mesher run at 0.5% touches 30-100 MiB (BENCHMARKS.md, "Session 29").
+// reporting, feature bit 5), first touching a fresh huge page cut from memory already reported
+// to the host cost 2.0-3.3 ms a MiB against 0.4 ms a MiB for base pages, measured in fresh
+// processes on our CI machines (huge pages were cheap there only while the memory freed by the
+// previous process had not been reported yet, about 2 s); a mesher run at 0.5% touches 30-100 MiB
+// (BENCHMARKS.md, "Session 29"). Why the host makes it so slow we did not find out.
 //
 // Cost: huge_pages_advised() reads the environment and a few sysfs files once per process (the
 // answer is cached; thread-safe); huge_pages_worthwhile() reads them on every call.
