@@ -15,11 +15,11 @@
 // Blocks from 4 KiB to 1 MiB come from a pool of 2 MiB chunks (huge pages where advised, as
 // above), so that the many arrays of a small run (a few thousand vertices: each array tens of
 // KiB) do not fault in their pages one by one: on the virtual machines of session 20 a 4 KiB
-// fault cost ~11 us, a whole 2 MiB huge page ~160 us. The pool keeps one free list per power-of-two size and reuses freed blocks
-// (a growing vector's old blocks serve the next one); it returns its chunks to the system when no
-// pooled block is live, but one; a forked child starts an empty pool, as writing into the
-// parent's chunks would copy them page by page (BENCHMARKS.md, "Session 20: a pool for
-// mid-sized arrays").
+// fault cost ~11 us, a whole 2 MiB huge page ~160 us. The pool keeps one free list per
+// power-of-two size and reuses freed blocks (a growing vector's old blocks serve the next one);
+// it returns its chunks to the system when no pooled block is live, but one; a forked child
+// starts an empty pool, as writing into the parent's chunks would copy them page by page
+// (BENCHMARKS.md, "Session 20: a pool for mid-sized arrays").
 //
 // Freed blocks above 1 MiB are kept and reused (the smallest that fits, at most twice the size
 // asked for) while other such blocks are live, up to as many bytes as are live, and all go back
