@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <delpsc/delaunay/regular_triangulation.h>
+#include <delpsc/delaunay/spatial_sort.h>
 #include <delpsc/io/point_generators.h>
 #include <random>
 #include <string>
@@ -50,6 +51,18 @@ void run_remove(benchmark::State& state, const std::string& spec) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(kRemovals));
 }
 
+// The insertion order alone (delaunay::brio_order: shuffle, rounds, Hilbert sort of each), which
+// every batch insertion computes first.
+void run_brio_order(benchmark::State& state, const std::string& spec) {
+  const auto pts = delpsc::io::generate_points(spec, 1);
+  std::vector<std::uint32_t> order;
+  for (auto _ : state) {
+    delpsc::delaunay::brio_order(pts, order);
+    benchmark::DoNotOptimize(order.data());
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(pts.size()));
+}
+
 const char* kSpecs[] = {"uniform:100000", "uniform:1000000", "weighted:100000",
                         "weighted:1000000", "sphere:100000",  "grid:103823"};
 
@@ -62,6 +75,9 @@ int register_all() {
     benchmark::RegisterBenchmark((std::string("delpsc_remove/") + spec).c_str(), run_remove, spec)
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
+  for (const char* spec : {"uniform:100000", "sphere:100000"})
+    benchmark::RegisterBenchmark((std::string("delpsc_brio_order/") + spec).c_str(), run_brio_order, spec)
+        ->Unit(benchmark::kMillisecond);
   return 0;
 }
 const int registered = register_all();

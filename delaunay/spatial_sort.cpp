@@ -12,35 +12,47 @@
 namespace delpsc::delaunay {
 namespace {
 
+/// Spreads the low 21 bits of v to every third bit of the result (bit b to bit 3b).
+std::uint64_t spread_by_three(std::uint32_t v) {
+  std::uint64_t x = v & 0x1fffffu;
+  x = (x | x << 32) & 0x001f00000000ffffull;
+  x = (x | x << 16) & 0x001f0000ff0000ffull;
+  x = (x | x << 8) & 0x100f00f00f00f00full;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+
 /// Position along the Hilbert curve of the grid cell (x[0], x[1], x[2]), each < 2^bits.
 /// Skilling's method: turn the axes into the "transposed" Hilbert index by undoing the curve's
 /// rotations and reflections level by level, Gray-encode, then interleave the bits (most
-/// significant level first).
-std::uint64_t hilbert_key(std::array<std::uint32_t, 3> x, int bits) {
+/// significant level first). Written without data-dependent branches: the bits tested are
+/// coin tosses, and as branches they were mispredicted about 30 times a key (hilbert_sort was
+/// 3.4% of meshing the cube at 0.456%).
+std::uint64_t hilbert_key(std::array<std::uint32_t, 3> cell, int bits) {
+  std::uint32_t x0 = cell[0], x1 = cell[1], x2 = cell[2];  // scalars: kept in registers
   const std::uint32_t top = 1u << (bits - 1);
   for (std::uint32_t q = top; q > 1; q >>= 1) {
     const std::uint32_t p = q - 1;
-    for (int i = 0; i < 3; ++i) {
-      if (x[i] & q) {
-        x[0] ^= p;  // invert the low bits of x0
-      } else {      // exchange the low bits of x0 and xi
-        const std::uint32_t t = (x[0] ^ x[i]) & p;
-        x[0] ^= t;
-        x[i] ^= t;
-      }
+    // Bit q of x_i set: invert the low bits of x_0; clear: exchange the low bits of x_0 and
+    // x_i (for x_0 itself the exchange is a no-op).
+    x0 ^= p & (0u - ((x0 & q) != 0));
+    for (std::uint32_t* xi : {&x1, &x2}) {
+      const std::uint32_t set = 0u - ((*xi & q) != 0);
+      const std::uint32_t t = (x0 ^ *xi) & p & ~set;
+      x0 ^= (p & set) | t;
+      *xi ^= t;
     }
   }
-  x[1] ^= x[0];
-  x[2] ^= x[1];
+  x1 ^= x0;
+  x2 ^= x1;
   std::uint32_t t = 0;
-  for (std::uint32_t q = top; q > 1; q >>= 1)
-    if (x[2] & q) t ^= q - 1;
-  for (auto& xi : x) xi ^= t;
-
-  std::uint64_t key = 0;
-  for (int b = bits - 1; b >= 0; --b)
-    for (int i = 0; i < 3; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
-  return key;
+  for (std::uint32_t q = top; q > 1; q >>= 1) t ^= (q - 1) & (0u - ((x2 & q) != 0));
+  x0 ^= t;
+  x1 ^= t;
+  x2 ^= t;
+  // Bit b of x_0, x_1, x_2 goes to bit 3b + 2, 3b + 1, 3b of the key.
+  return spread_by_three(x0) << 2 | spread_by_three(x1) << 1 | spread_by_three(x2);
 }
 
 /// splitmix64: a tiny, well-mixed deterministic generator for the shuffle.

@@ -28,24 +28,38 @@ bool is_permutation_of_range(std::vector<std::uint32_t> order, std::size_t n) {
   return true;
 }
 
+// Sorts the k^3 unit grid (given in reverse order) on a 2^bits grid and requires every step of
+// the resulting order to join face neighbours.
+void check_unit_steps(int k, int bits) {
+  CAPTURE(k);
+  CAPTURE(bits);
+  const auto pts = test::grid_points(k, k, k);
+  std::vector<std::uint32_t> order(pts.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::reverse(order.begin(), order.end());
+  hilbert_sort(pts, order, bits);
+  CHECK(is_permutation_of_range(order, pts.size()));
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const double d = (pts[order[i]].point() - pts[order[i - 1]].point()).norm();
+    REQUIRE(d == 1.0);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("hilbert_sort visits a full grid by unit steps") {
   // On the 2^b grid with one point per curve cell, a Hilbert curve moves to a face neighbour at
   // every step: a strong check of the key computation (a Morton order would jump).
-  for (int bits = 1; bits <= 4; ++bits) {
-    const int k = 1 << bits;
-    const auto pts = test::grid_points(k, k, k);
-    std::vector<std::uint32_t> order(pts.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::reverse(order.begin(), order.end());
-    hilbert_sort(pts, order, bits);
-    CHECK(is_permutation_of_range(order, pts.size()));
-    for (std::size_t i = 1; i < order.size(); ++i) {
-      const double d = (pts[order[i]].point() - pts[order[i - 1]].point()).norm();
-      REQUIRE(d == 1.0);
-    }
-  }
+  for (int bits = 1; bits <= 4; ++bits) check_unit_steps(1 << bits, bits);
+}
+
+TEST_CASE("hilbert_sort keeps the coarse curve's order at fine grids, up to 21 bits") {
+  // A k^3 grid of points sorted on a 2^bits grid: each point falls in its own cell of the
+  // coarse k^3 grid, and a Hilbert key's top bits are the coarse curve's key, so the order
+  // still moves by unit steps. Checks the key's high levels and the interleaving of all
+  // 3 x 21 bits, which the full grids above (at most 4 bits) do not reach.
+  for (const int k : {2, 4, 8})
+    for (const int bits : {6, 10, 16, 21}) check_unit_steps(k, bits);
 }
 
 TEST_CASE("brio_order is a deterministic permutation with local rounds") {
