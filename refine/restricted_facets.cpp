@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <delpsc/kernel/bits.h>
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/kernel/predicates.h>
 
@@ -164,7 +165,7 @@ void RestrictedFacets::examine(Facet f, double cover_power) {
   // Vertices in increasing order: t's orthocentre and line (so the dual edge) and the record do
   // not depend on which cell the facet is seen from.
   std::array<PointId, 3> v = dt_->facet_vertices(f);
-  std::sort(v.begin(), v.end());
+  kernel::sort3(v);
   // V_t lies in the power cell of an excluded vertex, which misses the domain: no record, and an
   // outcome update() may carry over (it stays true however the cells change).
   if (std::any_of(v.begin(), v.end(), [&](PointId u) { return u < excluded_.size() && excluded_[u]; })) return;

@@ -38,3 +38,17 @@ TEST_CASE("mix64: splitmix64's finaliser, a bijection that spreads consecutive i
   for (std::uint64_t i = 0; i < 10000; ++i) seen.insert(kernel::mix64(i) >> 50);  // top 14 bits
   CHECK(seen.size() > 7000);  // consecutive inputs land all over the range
 }
+
+TEST_CASE("sort3 sorts every arrangement of three values, ties included") {
+  // All 27 triples over {0, 1, 2} (every order, with and without ties) against std::sort.
+  for (std::uint32_t code = 0; code < 27; ++code) {
+    std::array<std::uint32_t, 3> v{code % 3, code / 3 % 3, code / 9};
+    std::array<std::uint32_t, 3> expected = v;
+    std::sort(expected.begin(), expected.end());
+    kernel::sort3(v);
+    CHECK(v == expected);
+  }
+  std::array<std::uint32_t, 3> extremes{0xffffffffu, 0, 7};
+  kernel::sort3(extremes);
+  CHECK(extremes == std::array<std::uint32_t, 3>{0, 7, 0xffffffffu});
+}
