@@ -218,6 +218,13 @@ class Complex {
   /// close ones). O(n).
   double closest_parameter(std::uint32_t c, const Vec3& p) const;
 
+  /// closest_parameter for each of `points` (out.size() == points.size()), faster for many: a
+  /// hierarchy of boxes over runs of consecutive segments, built once (O(n)), then a branch and
+  /// bound per point, O(log n) for points on or near the curve (the G1 check's ball centres),
+  /// O(n) at worst (a circle's centre). The same answers as closest_parameter, up to the
+  /// rounding of a box's distance in a tie.
+  void closest_parameters(std::uint32_t c, std::span<const Vec3> points, std::span<double> out) const;
+
   /// Parameter of the polyline vertex with the given vertex index, or nullopt if the curve does
   /// not pass through it (on a closed curve the start corner gives 0). O(n).
   std::optional<double> parameter_of_vertex(std::uint32_t c, std::uint32_t vertex) const;

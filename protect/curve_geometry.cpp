@@ -1,8 +1,12 @@
 // Arc-length queries on the curves of a Complex: point at a parameter, curve distance, and
 // seg_σ(b), the piece of a curve inside a ball that contains the ball's centre (DelPSC §2.1).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <vector>
 
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/kernel/predicates.h>
 
@@ -112,6 +116,73 @@ double Complex::closest_parameter(std::uint32_t c, const Vec3& p) const {
     }
   }
   return best_s;
+}
+
+void Complex::closest_parameters(std::uint32_t c, std::span<const Vec3> points, std::span<double> out) const {
+  const auto params = curve_parameters(c);
+  const auto poly = curve_polyline(c);
+  const std::size_t segments = poly.size() - 1;
+  // A hierarchy over runs of consecutive segments, halved by index: consecutive segments of a
+  // polyline lie together, so the runs' boxes nest without any spatial sorting. Node k's
+  // children are built right after it (left at k + 1, right at `right`).
+  struct Node {
+    kernel::Box3 box;
+    std::uint32_t first, count, right;
+  };
+  constexpr std::uint32_t kLeafSegments = 8;
+  std::vector<Node> nodes;
+  nodes.reserve(2 * (segments / kLeafSegments + 1));
+  const auto build = [&](auto& self, std::uint32_t first, std::uint32_t count) -> kernel::Box3 {
+    const std::size_t k = nodes.size();
+    nodes.push_back({{}, first, count, 0});
+    kernel::Box3 box;
+    if (count <= kLeafSegments) {
+      for (std::uint32_t i = first; i <= first + count; ++i) box.extend(vertices[poly[i]]);
+    } else {
+      const std::uint32_t half = count / 2;
+      box = self(self, first, half);
+      nodes[k].right = static_cast<std::uint32_t>(nodes.size());
+      const kernel::Box3 other = self(self, first + half, count - half);
+      box.extend(other.lo);
+      box.extend(other.hi);
+    }
+    nodes[k].box = box;
+    return box;
+  };
+  build(build, 0, static_cast<std::uint32_t>(segments));
+  // Branch and bound, nearer child first; a run is left out only when its box is strictly
+  // farther than the best segment so far, so equally close segments are all seen and the
+  // first in curve order wins, as in closest_parameter.
+  std::vector<std::uint32_t> stack;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    const Vec3& p = points[q];
+    double best = std::numeric_limits<double>::infinity(), best_s = 0;
+    std::size_t best_segment = segments;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const Node& node = nodes[stack.back()];
+      const std::uint32_t k = stack.back();
+      stack.pop_back();
+      if (node.box.squared_distance(p) > best) continue;
+      if (node.count > kLeafSegments) {
+        const std::uint32_t left = k + 1, right = node.right;
+        const bool left_first = nodes[left].box.squared_distance(p) <= nodes[right].box.squared_distance(p);
+        stack.push_back(left_first ? right : left);
+        stack.push_back(left_first ? left : right);
+        continue;
+      }
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const auto hit = kernel::closest_point_on_segment(p, vertices[poly[i]], vertices[poly[i + 1]]);
+        const double d2 = (hit.point - p).squaredNorm();
+        if (d2 < best || (d2 == best && i < best_segment)) {
+          best = d2;
+          best_segment = i;
+          best_s = params[i] + hit.t * (params[i + 1] - params[i]);
+        }
+      }
+    }
+    out[q] = best_s;
+  }
 }
 
 std::optional<double> Complex::parameter_of_vertex(std::uint32_t c, std::uint32_t vertex) const {

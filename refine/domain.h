@@ -88,6 +88,11 @@ class Domain {
   virtual CurveSegment curve_segment_in_ball(std::uint32_t curve, double s, double r) const = 0;
   /// Parameter of the point of the curve closest to p.
   virtual double curve_closest_parameter(std::uint32_t curve, const Vec3& p) const = 0;
+  /// curve_closest_parameter for each of `points` (out.size() == points.size()), for callers
+  /// with many points on one curve; an override may answer a batch faster than point by point.
+  virtual void curve_closest_parameters(std::uint32_t curve, std::span<const Vec3> points, std::span<double> out) const {
+    for (std::size_t i = 0; i < points.size(); ++i) out[i] = curve_closest_parameter(curve, points[i]);
+  }
   /// Patches along the curve, with multiplicity (a patch on both sides of the curve twice).
   virtual std::span<const std::uint32_t> curve_patches(std::uint32_t curve) const = 0;
 

@@ -54,6 +54,9 @@ class PolygonDomain final : public Domain {
   double curve_distance(std::uint32_t c, double s0, double s1) const override { return complex_.curve_distance(c, s0, s1); }
   CurveSegment curve_segment_in_ball(std::uint32_t c, double s, double r) const override;
   double curve_closest_parameter(std::uint32_t c, const Vec3& p) const override { return complex_.closest_parameter(c, p); }
+  void curve_closest_parameters(std::uint32_t c, std::span<const Vec3> points, std::span<double> out) const override {
+    complex_.closest_parameters(c, points, out);
+  }
   std::span<const std::uint32_t> curve_patches(std::uint32_t c) const override { return complex_.curve_patch_ids(c); }
 
   std::uint32_t patch_count() const override { return static_cast<std::uint32_t>(complex_.patch_count()); }

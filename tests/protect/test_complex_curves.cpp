@@ -185,3 +185,33 @@ TEST_CASE("closest parameter finds points back") {
       CHECK((c.point_at(k, back) - c.point_at(k, s)).norm() < 1e-12);
     }
 }
+
+TEST_CASE("closest parameters of a batch agree with closest_parameter point by point") {
+  // A circle of 4,000 segments (the capped cylinder's rims) and the square's four-segment loop:
+  // points on the curves, near them, far off, at a rim's centre (every segment equally far: the
+  // hierarchy's worst case, where the first in curve order must still win) and on a corner.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (const Complex& c : {build_complex(io::make_capped_cylinder(1, 1, 4000, 2, 2)), SquareLoop().complex}) {
+    for (std::uint32_t k = 0; k < c.curve_count(); ++k) {
+      std::vector<Vec3> points;
+      for (double s = 0; s < c.curves[k].length; s += c.curves[k].length / 97) {
+        const Vec3 on = c.point_at(k, s);
+        points.push_back(on);
+        for (const double scale : {1e-9, 1e-3, 0.3, 5.0})
+          points.push_back(on + scale * Vec3(unit(rng), unit(rng), unit(rng)));
+      }
+      const Vec3 first = c.point_at(k, 0), middle = c.point_at(k, 0.5 * c.curves[k].length);
+      points.push_back(0.5 * (first + middle));  // the centre of a rim
+      points.push_back(first);
+      std::vector<double> batch(points.size());
+      c.closest_parameters(k, points, batch);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        CAPTURE(i);
+        const double one = c.closest_parameter(k, points[i]);
+        CHECK((c.point_at(k, batch[i]) - points[i]).norm() == doctest::Approx((c.point_at(k, one) - points[i]).norm()).epsilon(1e-15));
+        CHECK(batch[i] == one);
+      }
+    }
+  }
+}
