@@ -259,6 +259,31 @@ TEST_CASE("the walk and the tree find what measuring every sample against every 
   }
 }
 
+TEST_CASE("the walk and the tree agree with every sample measured on a fan of thin triangles") {
+  // A disc fanned from its centre into 600 triangles, and a copy whose rim goes up and down by
+  // a pseudo-random 0.01: near the centre consecutive samples lie many triangles apart, the
+  // walk goes far, and the tree is slow there (all the thin triangles' boxes overlap).
+  constexpr std::uint32_t kRim = 600;
+  io::TriangleSoup soup;
+  soup.vertices.emplace_back(0, 0, 0);
+  for (std::uint32_t i = 0; i < kRim; ++i)
+    soup.vertices.emplace_back(std::cos(2 * M_PI * i / kRim), std::sin(2 * M_PI * i / kRim), 0);
+  for (std::uint32_t i = 0; i < kRim; ++i) soup.triangles.push_back({0, 1 + i, 1 + (i + 1) % kRim});
+  const PolygonDomain disc(protect::build_complex(soup));
+  io::SurfaceMesh wavy = mesh_of(disc.complex());
+  for (std::size_t v = 0; v < wavy.vertices.size(); ++v)
+    if (wavy.vertices[v].squaredNorm() > 0.5) wavy.vertices[v].z() = 0.01 * std::sin(12.9898 * static_cast<double>(v) + 78.233);
+  const double h = 0.05;
+  const ApproximationError e = measure(wavy, disc, h);
+  const auto& in = disc.complex();
+  const double out_in = brute_force_distance(wavy.vertices, wavy.triangles, in.vertices, in.triangles, h);
+  const double in_out = brute_force_distance(in.vertices, in.triangles, wavy.vertices, wavy.triangles, h);
+  INFO("out->in " << out_in << " in->out " << in_out);
+  CHECK(out_in > 0.005);
+  CHECK(e.output_to_input.distance == doctest::Approx(out_in).epsilon(kTiny));
+  CHECK(e.input_to_output.distance == doctest::Approx(in_out).epsilon(kTiny));
+}
+
 TEST_CASE("features: chords skipping every other vertex of a polygonal rim") {
   // The capped cylinder's rims are regular 24-gons. Replace one rim's edges by chords A-C over
   // every second vertex B: the input vertex B is the sag s = |B - M| from the chord (M its
