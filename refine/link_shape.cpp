@@ -1,46 +1,64 @@
 #include "link_shape.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace delpsc::refine {
 
 using delaunay::PointId;
 
-// The link graph's vertices sorted, degrees, and connectivity by union-find, so that a
-// vertex with a large umbrella (a big ball next to many small ones) costs O(k log k), not
-// O(k^2): it is re-checked after every insertion nearby.
-LinkShape link_shape_sorted(std::span<const std::array<PointId, 2>> link) {
-  thread_local std::vector<PointId> verts;
-  thread_local std::vector<int> degree;
-  thread_local std::vector<std::size_t> parent;
-  verts.clear();
-  for (const auto& e : link) verts.insert(verts.end(), e.begin(), e.end());
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  auto index = [&](PointId v) {
-    return static_cast<std::size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
-  };
-  degree.assign(verts.size(), 0);
-  parent.resize(verts.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  auto root = [&](std::size_t i) {
+// Large links: each endpoint numbered on first sight through an open-addressing table, degrees
+// counted on the way (a third edge at a vertex ends the test), then connectivity by union-find;
+// O(k) expected for k edges. A vertex with a large umbrella (a big ball next to many small
+// ones, or the crowd at a fold) is re-checked after every insertion nearby: sorting its link's
+// vertices each time, as this did before, took a third of meshing hand.off at 0.5%
+// (BENCHMARKS.md, "Session 30").
+LinkShape link_shape_large(std::span<const std::array<PointId, 2>> link) {
+  constexpr std::uint32_t kFree = 0xffffffffu;
+  thread_local std::vector<PointId> keys;
+  thread_local std::vector<std::uint32_t> number;  // by slot: the endpoint's number, or kFree
+  thread_local std::vector<std::uint32_t> degree, parent, ends;
+  // At most 2k endpoints in at least 4k slots: load at most 1/2.
+  int bits = 6;
+  while ((std::size_t{1} << bits) < 4 * link.size()) ++bits;
+  const std::size_t mask = (std::size_t{1} << bits) - 1;
+  keys.resize(mask + 1);
+  number.assign(mask + 1, kFree);
+  degree.clear();
+  ends.resize(2 * link.size());
+  for (std::size_t e = 0; e < link.size(); ++e)
+    for (int k = 0; k < 2; ++k) {
+      const PointId v = link[e][k];
+      // Fibonacci hashing: the top bits of the product spread consecutive ids.
+      std::size_t h = static_cast<std::size_t>((std::uint64_t{v} * 0x9e3779b97f4a7c15ull) >> (64 - bits));
+      while (number[h] != kFree && keys[h] != v) h = (h + 1) & mask;
+      if (number[h] == kFree) {
+        keys[h] = v;
+        number[h] = static_cast<std::uint32_t>(degree.size());
+        degree.push_back(0);
+      }
+      if (++degree[number[h]] > 2) return {false, degree.size()};
+      ends[2 * e + k] = number[h];
+    }
+  const std::size_t n = degree.size();
+  // Connected with degrees <= 2 needs n <= k + 1 (a path); more vertices cannot be connected.
+  if (n > link.size() + 1) return {false, n};
+  parent.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+  const auto root = [&](std::uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  std::size_t components = verts.size();
-  for (const auto& e : link) {
-    const std::size_t a = index(e[0]), b = index(e[1]);
-    ++degree[a];
-    ++degree[b];
-    const std::size_t ra = root(a), rb = root(b);
+  std::size_t components = n;
+  for (std::size_t e = 0; e < link.size(); ++e) {
+    const std::uint32_t ra = root(ends[2 * e]), rb = root(ends[2 * e + 1]);
     if (ra != rb) {
       parent[ra] = rb;
       --components;
     }
   }
-  const bool low_degree = std::all_of(degree.begin(), degree.end(), [](int d) { return d <= 2; });
-  return {low_degree && components == 1, verts.size()};
+  return {components == 1, n};
 }
 
 // The common case, an umbrella of a few triangles (a surface vertex has ~6): the same answer
@@ -80,7 +98,7 @@ LinkShape link_shape_small(std::span<const std::array<PointId, 2>> link) {
 }
 
 LinkShape link_shape(std::span<const std::array<PointId, 2>> link) {
-  return link.size() <= kSmallLink ? link_shape_small(link) : link_shape_sorted(link);
+  return link.size() <= kSmallLink ? link_shape_small(link) : link_shape_large(link);
 }
 
 }  // namespace delpsc::refine

@@ -18,13 +18,15 @@ struct LinkShape {
 };
 
 /// The shape of the graph with these edges (each two distinct vertices, no edge twice).
-/// O(k log k) for k edges; small links (the common case) by linear scans without allocation.
+/// O(k) expected for k edges; small links (the common case) by linear scans without allocation.
 LinkShape link_shape(std::span<const std::array<delaunay::PointId, 2>> link);
 
 /// Up to kSmallLink edges: fixed arrays, O(k^2). link_shape's choice for such links.
 inline constexpr std::size_t kSmallLink = 16;
 LinkShape link_shape_small(std::span<const std::array<delaunay::PointId, 2>> link);
-/// Any size: sorted vertices and union-find, O(k log k), memory kept between calls (per thread).
-LinkShape link_shape_sorted(std::span<const std::array<delaunay::PointId, 2>> link);
+/// Any size: endpoints numbered through a hash table, degrees, union-find; O(k) expected,
+/// memory kept between calls (per thread). `vertices` counts the endpoints seen before a
+/// third edge at one vertex ended the test, when it did.
+LinkShape link_shape_large(std::span<const std::array<delaunay::PointId, 2>> link);
 
 }  // namespace delpsc::refine

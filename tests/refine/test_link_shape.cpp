@@ -1,9 +1,12 @@
 // The link classifier behind D1/D2 (refine/link_shape.h): known shapes, and the small and the
-// sorted implementations agreeing on many random graphs, large ones included.
+// large implementations agreeing with a plain oracle (degrees in a map, connectivity by a
+// search) on many random graphs, large ones included.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
+#include <set>
 #include <vector>
 
 #include <delpsc/refine/link_shape.h>
@@ -14,16 +17,40 @@ using Edge = std::array<delaunay::PointId, 2>;
 
 namespace {
 
+// Whether the graph is connected with every degree <= 2, and its vertex count: by a map of
+// degrees and a depth-first search, nothing shared with the classifiers.
+LinkShape oracle(const std::vector<Edge>& link) {
+  std::map<delaunay::PointId, std::vector<delaunay::PointId>> adjacent;
+  for (const Edge& e : link) {
+    adjacent[e[0]].push_back(e[1]);
+    adjacent[e[1]].push_back(e[0]);
+  }
+  bool low_degree = true;
+  for (const auto& [v, next] : adjacent) low_degree = low_degree && next.size() <= 2;
+  std::set<delaunay::PointId> seen;
+  std::vector<delaunay::PointId> todo{adjacent.begin()->first};
+  while (!todo.empty()) {
+    const delaunay::PointId v = todo.back();
+    todo.pop_back();
+    if (!seen.insert(v).second) continue;
+    for (const delaunay::PointId w : adjacent[v]) todo.push_back(w);
+  }
+  return {low_degree && seen.size() == adjacent.size(), adjacent.size()};
+}
+
 LinkShape both(const std::vector<Edge>& link) {
-  const LinkShape sorted = refine::link_shape_sorted(link);
+  const LinkShape expected = oracle(link);
+  const LinkShape large = refine::link_shape_large(link);
+  CHECK(large.simple == expected.simple);
+  if (expected.simple) CHECK(large.vertices == expected.vertices);
   if (link.size() <= refine::kSmallLink) {
     const LinkShape small = refine::link_shape_small(link);
-    CHECK(small.simple == sorted.simple);
-    if (sorted.simple) CHECK(small.vertices == sorted.vertices);
+    CHECK(small.simple == expected.simple);
+    if (expected.simple) CHECK(small.vertices == expected.vertices);
   }
   const LinkShape chosen = refine::link_shape(link);
-  CHECK(chosen.simple == sorted.simple);
-  return sorted;
+  CHECK(chosen.simple == expected.simple);
+  return expected;
 }
 
 std::vector<Edge> cycle(delaunay::PointId first, std::size_t n) {
@@ -62,12 +89,14 @@ TEST_CASE("known link shapes") {
   CHECK(both({{5, 8}}).simple);
 }
 
-TEST_CASE("small and sorted classifiers agree on random graphs") {
+TEST_CASE("small and large classifiers agree with the oracle on random graphs") {
   std::mt19937 engine(12345);
   auto rng = [&] { return static_cast<delaunay::PointId>(engine()); };
   std::size_t simple = 0, total = 0;
   for (int round = 0; round < 20000; ++round) {
-    const std::size_t k = 1 + rng() % 24;
+    // Mostly around the small classifier's limit; one round in 8 up to 400 edges, with ids
+    // spread over all 31 bits (the large one's hash table, its probing and growth).
+    const std::size_t k = round % 8 == 0 ? 1 + rng() % 400 : 1 + rng() % 24;
     const delaunay::PointId range = static_cast<delaunay::PointId>(2 + rng() % (k + 3));
     std::vector<Edge> link;
     for (std::size_t i = 0; i < k; ++i) {
@@ -78,9 +107,23 @@ TEST_CASE("small and sorted classifiers agree on random graphs") {
       link.push_back(e);
     }
     if (link.empty()) continue;
+    if (round % 8 == 0) {
+      // Ids scattered over 31 bits (consecutive ones hash without collisions).
+      std::map<delaunay::PointId, delaunay::PointId> id;
+      std::set<delaunay::PointId> used;
+      for (const Edge& e : link)
+        for (const delaunay::PointId v : e) {
+          if (id.count(v) != 0) continue;
+          delaunay::PointId fresh = rng() & 0x7fffffffu;
+          while (!used.insert(fresh).second) fresh = rng() & 0x7fffffffu;
+          id[v] = fresh;
+        }
+      for (Edge& e : link)
+        for (delaunay::PointId& v : e) v = id.at(v);
+    }
     // Sometimes a path or cycle in disguise: relabelled and shuffled.
     if (round % 3 == 0) {
-      link = cycle(rng() % 1000, 3 + rng() % 20);
+      link = cycle(round % 8 == 0 ? rng() % 0x7fff0000u : rng() % 1000, round % 8 == 0 ? 3 + rng() % 400 : 3 + rng() % 20);
       if (round % 2 == 0) link.pop_back();
       std::shuffle(link.begin(), link.end(), engine);
     }
