@@ -121,6 +121,10 @@ double Complex::closest_parameter(std::uint32_t c, const Vec3& p) const {
 void Complex::closest_parameters(std::uint32_t c, std::span<const Vec3> points, std::span<double> out) const {
   const auto params = curve_parameters(c);
   const auto poly = curve_polyline(c);
+  if (poly.size() < 2) {  // no segment: as closest_parameter, parameter 0
+    std::fill(out.begin(), out.end(), 0.0);
+    return;
+  }
   const std::size_t segments = poly.size() - 1;
   // A hierarchy over runs of consecutive segments, halved by index: consecutive segments of a
   // polyline lie together, so the runs' boxes nest without any spatial sorting. Node k's
