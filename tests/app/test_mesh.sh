@@ -164,6 +164,8 @@ t=$(value triangles)
 [[ $(grep -c "<line" "$TMP/r.svg") -gt 12 && $(grep -c "<circle" "$TMP/r.svg") -eq 8 ]] || fail "--preview: feature edges or corners missing"
 # -v lists each patch's topology; a failed run still writes its report, with the error.
 expect 0 "patch 5:" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" -v
+grep -Eq "first examination: facets queried=[1-9][0-9]* spared by the sample's cover=[0-9]+" "$TMP/err" \
+  || fail "-v: no first-examination counts: $(grep insertions "$TMP/err")"
 expect 2 "" -- mesh "$TMP/none.off" -o "$TMP/x.off" --report "$TMP/fail.json"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); sys.exit(not (r["exit_code"] == 2 and "none.off" in r["error"]))' \
   "$TMP/fail.json" || fail "--report of a failed run: $(cat "$TMP/fail.json")"
