@@ -9,7 +9,8 @@
 //       restricted to a patch that does not contain p (otherwise a triangle of σ with no vertex
 //       in σ would escape every umbrella).
 // Once the restricted triangles are known the checks are combinatorial. Cost: O(k^2) for an
-// umbrella of k triangles (k is ~6-20).
+// umbrella of k triangles (k is ~6-20); its link's shape in O(k) (link_shape.h; O(k^2) up to 16
+// edges).
 #pragma once
 
 #include <cstdint>

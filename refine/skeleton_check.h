@@ -10,8 +10,9 @@
 // each corner vertex at a corner of the domain.
 //
 // Independent of the mesher's data structures: it reads only the SurfaceMesh and the Domain.
-// Cost O(T log T) plus one closest-point query per vertex, plus O(K) per feature-edge end for a
-// curve of K polyline segments and O(C) per corner vertex for C corners.
+// Cost O(T log T) plus one closest-point query per vertex, plus, per curve of K polyline
+// segments, O(K) once and O(log K) per feature-edge end on it (Domain::curve_closest_parameters;
+// O(K) per end for a Domain without a batch answer), and O(C) per corner vertex for C corners.
 #pragma once
 
 #include <cstdint>
