@@ -65,8 +65,13 @@ kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<cons
 /// h = λ/2 this leaves one query in 40 to 60 samples.
 class FarthestSample {
  public:
+  using Neighbours = kernel::LargeVector<std::array<std::uint32_t, 3>>;
   FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree)
-      : vertices_(vertices), to_(to), tree_(tree), neighbours_(edge_neighbours(to)) {}
+      : vertices_(vertices), to_(to), tree_(tree), own_neighbours_(edge_neighbours(to)), neighbours_(own_neighbours_) {}
+  /// With `to`'s edge_neighbours made once for several samplers (they must outlive this one).
+  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
+                 const Neighbours& neighbours)
+      : vertices_(vertices), to_(to), tree_(tree), neighbours_(neighbours) {}
 
   void sample(const Vec3& p) {
     if (result_.samples++ > 0 && walk(p)) return;
@@ -136,7 +141,8 @@ class FarthestSample {
   std::span<const Vec3> vertices_;
   std::span<const Triangle> to_;
   const kernel::AabbTree& tree_;
-  kernel::LargeVector<std::array<std::uint32_t, 3>> neighbours_;
+  Neighbours own_neighbours_;
+  std::span<const std::array<std::uint32_t, 3>> neighbours_;
   std::uint32_t current_ = kNone;
   OneSidedDistance result_;
   double largest_squared_ = 0;  // result_.distance squared
@@ -262,18 +268,22 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
   // it. Input to output is the dearer (its queries search the output's many triangles: 0.53 s
   // against 0.09 s on joint at 0.5%), so its first half of the input triangles gets the second
   // thread and this one does the rest. Each vertex is still sampled once.
+  // The output's tree and its triangles' neighbours are made once (side by side) for both
+  // threads' samplers towards it.
+  auto neighbours_made = std::async(std::launch::async, [&] { return edge_neighbours(output.triangles); });
   const kernel::AabbTree output_tree(output.vertices, output.triangles);
+  const FarthestSample::Neighbours output_neighbours = neighbours_made.get();
   const std::span<const Triangle> input_triangles(complex.triangles);
   const std::size_t half = input_triangles.size() / 2;
   auto first_half_to_output = std::async(std::launch::async, [&] {
-    FarthestSample to_output(output.vertices, output.triangles, output_tree);
+    FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours);
     sample_surface(complex.vertices, input_triangles.first(half), h, to_output);  // corners first seen here
     return to_output.result();
   });
   FarthestSample to_input(complex.vertices, complex.triangles, input.tree());
   sample_surface(output.vertices, output.triangles, h, to_input);
   e.output_to_input = to_input.result();
-  FarthestSample to_output(output.vertices, output.triangles, output_tree);
+  FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours);
   sample_surface(complex.vertices, input_triangles, h, to_output, half);
   e.input_to_output = to_output.result();
   keep_larger(e.input_to_output, first_half_to_output.get());
