@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -56,10 +57,74 @@ TEST_CASE("hilbert_sort visits a full grid by unit steps") {
 TEST_CASE("hilbert_sort keeps the coarse curve's order at fine grids, up to 21 bits") {
   // A k^3 grid of points sorted on a 2^bits grid: each point falls in its own cell of the
   // coarse k^3 grid, and a Hilbert key's top bits are the coarse curve's key, so the order
-  // still moves by unit steps. Checks the key's high levels and the interleaving of all
-  // 3 x 21 bits, which the full grids above (at most 4 bits) do not reach.
+  // still moves by unit steps. Checks the key's top levels at widths the full grids above
+  // (at most 4 bits) do not reach; every level is checked by the next test.
   for (const int k : {2, 4, 8})
     for (const int bits : {6, 10, 16, 21}) check_unit_steps(k, bits);
+}
+
+namespace {
+
+// Skilling's transform written plainly, with branches, as a reference: the position along the
+// Hilbert curve of cell x (each coordinate below 2^bits).
+std::uint64_t reference_hilbert_key(std::array<std::uint32_t, 3> x, int bits) {
+  const std::uint32_t top = 1u << (bits - 1);
+  for (std::uint32_t q = top; q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (x[i] & q) {
+        x[0] ^= p;
+      } else {
+        const std::uint32_t t = (x[0] ^ x[i]) & p;
+        x[0] ^= t;
+        x[i] ^= t;
+      }
+    }
+  }
+  x[1] ^= x[0];
+  x[2] ^= x[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = top; q > 1; q >>= 1)
+    if (x[2] & q) t ^= q - 1;
+  for (auto& xi : x) xi ^= t;
+  std::uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
+  return key;
+}
+
+}  // namespace
+
+TEST_CASE("hilbert_sort orders random cells as the plain Hilbert key does, every level") {
+  // Points at integer coordinates in [0, 2^bits) plus one at 2^bits in every coordinate: the
+  // sort's grid is then the integer grid itself (that last point clamped into the top cell),
+  // and its order must be a stable sort by the reference key - which depends on every level
+  // of every coordinate, unlike the grids above.
+  test::Rng rng(21);
+  for (int bits = 1; bits <= 21; ++bits) {
+    CAPTURE(bits);
+    const std::int64_t cells = std::int64_t{1} << bits;
+    std::vector<WeightedPoint> pts;
+    std::vector<std::array<std::uint32_t, 3>> cell;
+    for (int i = 0; i < 3000; ++i) {
+      const std::array<std::int64_t, 3> c{rng.integer(0, cells - 1), rng.integer(0, cells - 1), rng.integer(0, cells - 1)};
+      pts.push_back(WeightedPoint::from(Vec3(double(c[0]), double(c[1]), double(c[2]))));
+      cell.push_back({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
+    }
+    pts.push_back(WeightedPoint::from(Vec3(0, 0, 0)));
+    cell.push_back({0, 0, 0});
+    pts.push_back(WeightedPoint::from(Vec3(double(cells), double(cells), double(cells))));
+    const auto top = std::uint32_t(cells - 1);
+    cell.push_back({top, top, top});
+    std::vector<std::uint32_t> order(pts.size()), expected(pts.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::iota(expected.begin(), expected.end(), 0u);
+    std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return reference_hilbert_key(cell[a], bits) < reference_hilbert_key(cell[b], bits);
+    });
+    hilbert_sort(pts, order, bits);
+    CHECK(order == expected);
+  }
 }
 
 TEST_CASE("brio_order is a deterministic permutation with local rounds") {
