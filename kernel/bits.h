@@ -26,6 +26,9 @@ inline std::uint64_t mix64(std::uint64_t z) {
 /// Sorts (key, index) pairs by the low `key_bits` bits of the key (1 to 64), stably: least
 /// significant digit first, 8 or 16 bits a pass, skipping a digit that all keys share. O(n) per pass,
 /// n extra pairs of memory.
+using KeyedIndices = LargeVector<std::pair<std::uint64_t, std::uint32_t>>;
+void radix_sort_by_key(KeyedIndices& items, int key_bits = 64);
+
 /// Sorts three values in increasing order by three compare-exchanges, without branches on the
 /// values. For the vertex ids of a facet, sorted once per facet examined: std::sort on three
 /// items goes through an insertion sort whose moves call memmove (2.3% of meshing the cube).
@@ -40,8 +43,5 @@ inline void sort3(std::array<T, 3>& v) {
   exchange(v[1], v[2]);
   exchange(v[0], v[1]);
 }
-
-using KeyedIndices = LargeVector<std::pair<std::uint64_t, std::uint32_t>>;
-void radix_sort_by_key(KeyedIndices& items, int key_bits = 64);
 
 }  // namespace delpsc::kernel
