@@ -135,7 +135,7 @@ void Complex::closest_parameters(std::uint32_t c, std::span<const Vec3> points, 
   };
   constexpr std::uint32_t kLeafSegments = 8;
   std::vector<Node> nodes;
-  nodes.reserve(2 * (segments / kLeafSegments + 1));
+  nodes.reserve(segments / 2 + 2);  // leaves hold 4.5 to 8 segments: fewer than n / 2 nodes
   const auto build = [&](auto& self, std::uint32_t first, std::uint32_t count) -> kernel::Box3 {
     const std::size_t k = nodes.size();
     nodes.push_back({{}, first, count, 0});
@@ -156,7 +156,8 @@ void Complex::closest_parameters(std::uint32_t c, std::span<const Vec3> points, 
   build(build, 0, static_cast<std::uint32_t>(segments));
   // Branch and bound, nearer child first; a run is left out only when its box is strictly
   // farther than the best segment so far, so equally close segments are all seen and the
-  // first in curve order wins, as in closest_parameter.
+  // first in curve order wins, as in closest_parameter - unless the rounding of a box's
+  // distance puts it above a tie (the header's caveat).
   std::vector<std::uint32_t> stack;
   for (std::size_t q = 0; q < points.size(); ++q) {
     const Vec3& p = points[q];
