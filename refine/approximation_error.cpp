@@ -72,6 +72,9 @@ class FarthestSample {
   FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
                  const Neighbours& neighbours)
       : vertices_(vertices), to_(to), tree_(tree), neighbours_(neighbours) {}
+  // A copy's neighbours_ would point into the original's own table.
+  FarthestSample(const FarthestSample&) = delete;
+  FarthestSample& operator=(const FarthestSample&) = delete;
 
   void sample(const Vec3& p) {
     if (result_.samples++ > 0 && walk(p)) return;
