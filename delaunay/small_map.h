@@ -1,7 +1,8 @@
 // A small open-addressing hash map from 64-bit keys to 32-bit values, for the per-operation
-// bookkeeping of the triangulation (cavity edges, link facets). Clearing is O(1) (entries carry
-// the epoch of the operation that wrote them), and the arrays are kept between operations, so a
-// steady stream of insertions allocates nothing. Internal to delaunay/.
+// bookkeeping of the triangulation (cavity edges, link facets) and for numbering a large link's
+// vertices in the disk condition (refine/link_shape.cpp). Clearing is O(1) (entries carry the
+// epoch of the operation that wrote them), and the arrays are kept between operations, so a
+// steady stream of insertions allocates nothing. Not part of the public interface.
 #pragma once
 
 #include <cstddef>

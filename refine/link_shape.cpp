@@ -4,42 +4,37 @@
 #include <cstdint>
 #include <vector>
 
+#include <delpsc/delaunay/small_map.h>
+
 namespace delpsc::refine {
 
 using delaunay::PointId;
 
-// Large links: each endpoint numbered on first sight through an open-addressing table, degrees
-// counted on the way (a third edge at a vertex ends the test), then connectivity by union-find;
-// O(k) expected for k edges. A vertex with a large umbrella (a big ball next to many small
+// Large links: each endpoint numbered on first sight through a hash map (the triangulation's
+// SmallMap, cleared in O(1)), degrees counted on the way (a third edge at a vertex ends the
+// test), then connectivity by union-find; O(k) expected for k edges. A vertex with a large umbrella (a big ball next to many small
 // ones, or the crowd at a fold) is re-checked after every insertion nearby: sorting its link's
 // vertices each time, as this did before, took a third of meshing hand.off at 0.5%
 // (BENCHMARKS.md, "Session 30").
 LinkShape link_shape_large(std::span<const std::array<PointId, 2>> link) {
-  constexpr std::uint32_t kFree = 0xffffffffu;
-  thread_local std::vector<PointId> keys;
-  thread_local std::vector<std::uint32_t> number;  // by slot: the endpoint's number, or kFree
+  thread_local delaunay::detail::SmallMap number;  // endpoint -> its number
   thread_local std::vector<std::uint32_t> degree, parent, ends;
-  // At most 2k endpoints in at least 4k slots: load at most 1/2.
-  int bits = 6;
-  while ((std::size_t{1} << bits) < 4 * link.size()) ++bits;
-  const std::size_t mask = (std::size_t{1} << bits) - 1;
-  keys.resize(mask + 1);
-  number.assign(mask + 1, kFree);
+  number.reset(2 * link.size());
   degree.clear();
   ends.resize(2 * link.size());
   for (std::size_t e = 0; e < link.size(); ++e)
     for (int k = 0; k < 2; ++k) {
       const PointId v = link[e][k];
-      // Fibonacci hashing: the top bits of the product spread consecutive ids.
-      std::size_t h = static_cast<std::size_t>((std::uint64_t{v} * 0x9e3779b97f4a7c15ull) >> (64 - bits));
-      while (number[h] != kFree && keys[h] != v) h = (h + 1) & mask;
-      if (number[h] == kFree) {
-        keys[h] = v;
-        number[h] = static_cast<std::uint32_t>(degree.size());
+      std::uint32_t i;
+      if (const std::uint32_t* known = number.find(v)) {
+        i = *known;
+      } else {
+        i = static_cast<std::uint32_t>(degree.size());
+        number.insert(v, i);
         degree.push_back(0);
       }
-      if (++degree[number[h]] > 2) return {false, degree.size()};
-      ends[2 * e + k] = number[h];
+      if (++degree[i] > 2) return {false, degree.size()};
+      ends[2 * e + k] = i;
     }
   const std::size_t n = degree.size();
   // Connected with degrees <= 2 needs n <= k + 1 (a path); more vertices cannot be connected.

@@ -24,7 +24,7 @@ LinkShape link_shape(std::span<const std::array<delaunay::PointId, 2>> link);
 /// Up to kSmallLink edges: fixed arrays, O(k^2). link_shape's choice for such links.
 inline constexpr std::size_t kSmallLink = 16;
 LinkShape link_shape_small(std::span<const std::array<delaunay::PointId, 2>> link);
-/// Any size: endpoints numbered through a hash table, degrees, union-find; O(k) expected,
+/// Any size: endpoints numbered through a hash map, degrees, union-find; O(k) expected,
 /// memory kept between calls (per thread). `vertices` counts the endpoints seen before a
 /// third edge at one vertex ended the test, when it did.
 LinkShape link_shape_large(std::span<const std::array<delaunay::PointId, 2>> link);
