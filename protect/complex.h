@@ -218,11 +218,12 @@ class Complex {
   /// close ones). O(n).
   double closest_parameter(std::uint32_t c, const Vec3& p) const;
 
-  /// closest_parameter for each of `points` (out.size() == points.size()), faster for many: a
-  /// hierarchy of boxes over runs of consecutive segments, built once (O(n)), then a branch and
-  /// bound per point, O(log n) for points on or near the curve (the G1 check's ball centres),
-  /// O(n) at worst (a circle's centre). The same answers as closest_parameter, up to the
-  /// rounding of a box's distance in a tie.
+  /// The parameter of a point of the curve closest to each of `points` (out.size() ==
+  /// points.size()), faster than closest_parameter for many: an AABB tree over the segments,
+  /// built once (O(n log n)), then O(log n) a point on or near the curve (the G1 check's ball
+  /// centres), O(n) at worst (a circle's centre). Among equally close points (that centre, or a
+  /// closed curve's start, at 0 and at its length) it may name another than closest_parameter;
+  /// the distance is the same up to rounding.
   void closest_parameters(std::uint32_t c, std::span<const Vec3> points, std::span<double> out) const;
 
   /// Parameter of the polyline vertex with the given vertex index, or nullopt if the curve does

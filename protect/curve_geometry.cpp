@@ -125,68 +125,19 @@ void Complex::closest_parameters(std::uint32_t c, std::span<const Vec3> points, 
     std::fill(out.begin(), out.end(), 0.0);
     return;
   }
-  const std::size_t segments = poly.size() - 1;
-  // A hierarchy over runs of consecutive segments, halved by index: consecutive segments of a
-  // polyline lie together, so the runs' boxes nest without any spatial sorting. Node k's
-  // children are built right after it (left at k + 1, right at `right`).
-  struct Node {
-    kernel::Box3 box;
-    std::uint32_t first, count, right;
-  };
-  constexpr std::uint32_t kLeafSegments = 8;
-  std::vector<Node> nodes;
-  nodes.reserve(segments / 2 + 2);  // leaves hold 4.5 to 8 segments: fewer than n / 2 nodes
-  const auto build = [&](auto& self, std::uint32_t first, std::uint32_t count) -> kernel::Box3 {
-    const std::size_t k = nodes.size();
-    nodes.push_back({{}, first, count, 0});
-    kernel::Box3 box;
-    if (count <= kLeafSegments) {
-      for (std::uint32_t i = first; i <= first + count; ++i) box.extend(vertices[poly[i]]);
-    } else {
-      const std::uint32_t half = count / 2;
-      box = self(self, first, half);
-      nodes[k].right = static_cast<std::uint32_t>(nodes.size());
-      const kernel::Box3 other = self(self, first + half, count - half);
-      box.extend(other.lo);
-      box.extend(other.hi);
-    }
-    nodes[k].box = box;
-    return box;
-  };
-  build(build, 0, static_cast<std::uint32_t>(segments));
-  // Branch and bound, nearer child first; a run is left out only when its box is strictly
-  // farther than the best segment so far, so equally close segments are all seen and the
-  // first in curve order wins, as in closest_parameter - unless the rounding of a box's
-  // distance puts it above a tie (the header's caveat).
-  std::vector<std::uint32_t> stack;
+  // The segments as degenerate triangles (u, v, v) in an AABB tree, whose closest point on such
+  // a triangle lies on its one edge (measure_approximation measures curves the same way).
+  std::vector<std::array<std::uint32_t, 3>> segments;
+  segments.reserve(poly.size() - 1);
+  for (std::size_t i = 0; i + 1 < poly.size(); ++i) segments.push_back({poly[i], poly[i + 1], poly[i + 1]});
+  const kernel::AabbTree tree(vertices, segments);
   for (std::size_t q = 0; q < points.size(); ++q) {
-    const Vec3& p = points[q];
-    double best = std::numeric_limits<double>::infinity(), best_s = 0;
-    std::size_t best_segment = segments;
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const Node& node = nodes[stack.back()];
-      const std::uint32_t k = stack.back();
-      stack.pop_back();
-      if (node.box.squared_distance(p) > best) continue;
-      if (node.count > kLeafSegments) {
-        const std::uint32_t left = k + 1, right = node.right;
-        const bool left_first = nodes[left].box.squared_distance(p) <= nodes[right].box.squared_distance(p);
-        stack.push_back(left_first ? right : left);
-        stack.push_back(left_first ? left : right);
-        continue;
-      }
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        const auto hit = kernel::closest_point_on_segment(p, vertices[poly[i]], vertices[poly[i + 1]]);
-        const double d2 = (hit.point - p).squaredNorm();
-        if (d2 < best || (d2 == best && i < best_segment)) {
-          best = d2;
-          best_segment = i;
-          best_s = params[i] + hit.t * (params[i + 1] - params[i]);
-        }
-      }
-    }
-    out[q] = best_s;
+    const auto closest = tree.closest_point(points[q]);
+    const std::uint32_t i = closest->triangle;  // a tree over segments always has one
+    const Vec3 &a = vertices[poly[i]], &b = vertices[poly[i + 1]];
+    const double length2 = (b - a).squaredNorm();
+    const double t = length2 > 0 ? std::clamp((closest->point - a).dot(b - a) / length2, 0.0, 1.0) : 0.0;
+    out[q] = params[i] + t * (params[i + 1] - params[i]);
   }
 }
 
