@@ -13,6 +13,7 @@
 #include <delpsc/kernel/constructions.h>
 
 #include "edge_record_sort.h"
+#include "edges_by_curve.h"
 #include "triangle_samples.h"
 
 namespace delpsc::refine {
@@ -208,43 +209,6 @@ void validate(const io::SurfaceMesh& output) {
                                 " labels for " + std::to_string(output.edges.size()) + " edges");
 }
 
-/// The output's feature edges of each curve as (u, v, v), flat: curve c's are
-/// segments[offsets[c] .. offsets[c + 1]). Edges labelled with no input curve are counted.
-struct EdgesByCurve {
-  std::vector<std::size_t> offsets;
-  std::vector<Triangle> segments;
-  std::size_t unlabelled = 0;
-  Vec3 first_unlabelled = Vec3::Zero();
-};
-
-EdgesByCurve group_edges(const io::SurfaceMesh& output, std::uint32_t curve_count) {
-  EdgesByCurve g;
-  g.offsets.assign(curve_count + 1, 0);
-  const auto curve_of = [&](std::size_t e) -> std::int64_t {
-    if (output.edge_curve.empty()) return -1;
-    const std::int32_t c = output.edge_curve[e];
-    return c >= 0 && static_cast<std::uint32_t>(c) < curve_count ? c : -1;
-  };
-  for (std::size_t e = 0; e < output.edges.size(); ++e) {
-    const std::int64_t c = curve_of(e);
-    if (c >= 0) {
-      ++g.offsets[static_cast<std::size_t>(c) + 1];
-    } else if (g.unlabelled++ == 0) {
-      g.first_unlabelled = output.vertices[output.edges[e][0]];
-    }
-  }
-  for (std::uint32_t c = 0; c < curve_count; ++c) g.offsets[c + 1] += g.offsets[c];
-  g.segments.resize(g.offsets[curve_count]);
-  std::vector<std::size_t> next(g.offsets.begin(), g.offsets.end() - 1);
-  for (std::size_t e = 0; e < output.edges.size(); ++e) {
-    const std::int64_t c = curve_of(e);
-    if (c < 0) continue;
-    const auto [u, v] = output.edges[e];
-    g.segments[next[static_cast<std::size_t>(c)]++] = {u, v, v};
-  }
-  return g;
-}
-
 }  // namespace
 
 double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
@@ -292,7 +256,7 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
   keep_larger(e.input_to_output, first_half_to_output.get());
 
   const auto curve_count = static_cast<std::uint32_t>(complex.curve_count());
-  const EdgesByCurve edges = group_edges(output, curve_count);
+  const EdgesByCurve edges = group_edges_by_curve(output, curve_count);
   std::vector<Triangle> input_segments;
   for (std::uint32_t c = 0; c < curve_count; ++c) {
     const auto polyline = complex.curve_polyline(c);

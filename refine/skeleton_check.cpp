@@ -13,6 +13,7 @@
 #include <delpsc/kernel/bits.h>
 #include <delpsc/kernel/large_array.h>
 
+#include "edges_by_curve.h"
 #include "link_shape.h"
 
 namespace delpsc::refine {
@@ -182,28 +183,21 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
   // a batch in O(log n) a point on it, where one point at a time cost O(n) each (edges x
   // segments in all: quadratic on a fine mesh of a finely tessellated curve).
   {
-    std::vector<std::uint32_t> start(domain.curve_count() + 1, 0);  // edges by curve, counting sort
-    for (const std::int32_t c : mesh.edge_curve) ++start[static_cast<std::size_t>(c) + 1];
-    for (std::size_t c = 0; c < domain.curve_count(); ++c) start[c + 1] += start[c];
-    std::vector<std::uint32_t> by_curve(mesh.edges.size());
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < mesh.edges.size(); ++i)
-      by_curve[fill[static_cast<std::size_t>(mesh.edge_curve[i])]++] = static_cast<std::uint32_t>(i);
+    const EdgesByCurve edges = group_edges_by_curve(mesh, domain.curve_count());
     std::vector<Vec3> ends;
     std::vector<double> parameters;
     for (std::uint32_t c = 0; c < domain.curve_count(); ++c) {
+      const std::span<const std::array<std::uint32_t, 3>> segments(edges.segments.data() + edges.offsets[c],
+                                                                   edges.offsets[c + 1] - edges.offsets[c]);
       ends.clear();
-      for (std::uint32_t j = start[c]; j < start[c + 1]; ++j)
-        for (const std::uint32_t v : mesh.edges[by_curve[j]]) ends.push_back(mesh.vertices[v]);
+      for (const auto& s : segments) ends.push_back(mesh.vertices[s[0]]), ends.push_back(mesh.vertices[s[1]]);
       parameters.resize(ends.size());
       domain.curve_closest_parameters(c, ends, parameters);
       for (std::size_t k = 0; k < ends.size(); ++k) {
         const double off = (domain.curve_point(c, parameters[k]) - ends[k]).norm();
-        if (!(off <= tolerance)) {
-          const std::uint32_t v = mesh.edges[by_curve[start[c] + k / 2]][k % 2];
-          general("vertex " + std::to_string(v) + " of an edge of curve " + std::to_string(c) + " is " +
-                  std::to_string(off) + " off that curve");
-        }
+        if (!(off <= tolerance))
+          general("vertex " + std::to_string(segments[k / 2][k % 2]) + " of an edge of curve " + std::to_string(c) +
+                  " is " + std::to_string(off) + " off that curve");
       }
     }
   }
