@@ -219,7 +219,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   // tolerance of a few ulps of the diagonal.
   progress.phase("check", mesh.vertices.size());
   const auto t_check = Clock::now();
-  const refine::SkeletonReport check = refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm());
+  // Cut short at twice --max-seconds (TimeLimit::grace): on fans of thin triangles the checks
+  // and the distances took four times refinement's time.
+  const refine::SkeletonReport check =
+      refine::check_skeleton(mesh, domain, 1e-9 * (box.hi - box.lo).norm(), time_limit.grace());
   const refine::QualitySummary quality = refine::summarize_quality(mesh);
   phases.emplace_back("check", seconds_since(t_check));
   // Issue 6: the distances to the input, sampled at spacing λ/2 (coarser only for a run stopped
@@ -230,8 +233,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   refine::ApproximationOptions approximation_options;
   approximation_options.sample_spacing = approximation_spacing(lambda, expected, mesh.vertices.size(),
                                                                stats.stopped_on_request ? 1 : 8);
+  approximation_options.stop = time_limit.grace();
   const refine::ApproximationError approximation = refine::measure_approximation(mesh, domain, approximation_options);
   const double seconds_approximation = seconds_since(t_approximation);
+  const bool cut_short = check.stopped || approximation.stopped;
   phases.emplace_back("approximation", seconds_approximation);
   progress.clear();
 
@@ -258,20 +263,32 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
                                                         : std::to_string(failing));
   {
     const refine::MesherStats& s = stats;
-    report("stopped", std::string(s.stopped_on_request        ? "max-seconds"
+    report("stopped", std::string(s.stopped_on_request || cut_short ? "max-seconds"
                                   : s.stopped_at_max_vertices ? "max-vertices"
                                   : s.stuck                   ? "stuck"
                                                               : "no"));
   }
   report("min_angle", refine::min_triangle_angle_degrees(mesh));
-  report("hausdorff", approximation.relative(approximation.hausdorff()));
-  report("hausdorff_out_in", approximation.relative(approximation.output_to_input.distance));
-  report("hausdorff_in_out", approximation.relative(approximation.input_to_output.distance));
-  report("feature_distance", approximation.relative(approximation.feature_distance()));
+  // A measurement or a check cut short says so instead of giving figures it did not finish.
+  const auto report_distance = [&](const char* key, double d) {
+    if (approximation.stopped)
+      report(key, "unmeasured");
+    else
+      report(key, approximation.relative(d));
+  };
+  report_distance("hausdorff", approximation.hausdorff());
+  report_distance("hausdorff_out_in", approximation.output_to_input.distance);
+  report_distance("hausdorff_in_out", approximation.input_to_output.distance);
+  report_distance("feature_distance", approximation.feature_distance());
   report("hausdorff_spacing", approximation.relative(approximation.sample_spacing));
   report("seconds_approximation", seconds_approximation);
   report_quality(quality);
-  report_topology(compare_topology(check, domain.complex()), g);
+  if (check.stopped) {
+    report("patches_manifold", std::string("unchecked"));
+    report("patches_topology_ok", std::string("unchecked"));
+  } else {
+    report_topology(compare_topology(check, domain.complex()), g);
+  }
   report_complex_topology(refine::complex_topology(mesh.triangles), refine::complex_topology(domain.complex().triangles),
                           g);
   {
@@ -283,7 +300,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     if (const std::string crowded = crowding_warning(mesh, domain.complex(), lambda, expected, o.size); !crowded.empty())
       std::fprintf(stderr, "delpsc: warning: %s: %s\n", o.input.c_str(), crowded.c_str());
   bool g1 = true;
-  if (o.check) {
+  if (o.check && check.stopped) {
+    g1 = false;
+    report("g1", std::string("unchecked"));
+  } else if (o.check) {
     g1 = check.ok();
     report("g1", g1);
     const std::size_t shown = g.verbosity > 0 ? check.problems.size() : std::min<std::size_t>(check.problems.size(), 20);
@@ -335,6 +355,12 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   phases.emplace_back("output", seconds_since(t_output));
   progress.clear();
   report_phases(phases);
+  if (cut_short)
+    std::fprintf(stderr, "delpsc: %s: %s %s; the mesh (%zu vertices) is in %s\n", o.input.c_str(),
+                 time_limit.grace_ended().c_str(),
+                 check.stopped ? "while checking the mesh (G1 and the patches' topology unchecked, distances unmeasured)"
+                               : "while measuring the distances to the input (unmeasured)",
+                 mesh.vertices.size(), o.output.c_str());
   const refine::MesherStats& s = stats;
   if (s.stopped_at_max_vertices || s.stopped_on_request || s.stuck || failing != 0) {
     const std::string why =
@@ -352,7 +378,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
     list_failing(failing_vertices, g);
     return kCheckFailed;
   }
-  return g1 ? kOk : kCheckFailed;
+  return g1 && !cut_short ? kOk : kCheckFailed;
 }
 
 }  // namespace
@@ -388,7 +414,9 @@ Runner register_mesh(CLI::App& app) {
   add_max_seconds_option(app, o->max_seconds,
                          "the mesh reached is still written, as with --max-vertices (nothing when the limit comes "
                          "before Protect has ended; an empty mesh until the initial points are all inserted and "
-                         "examined); the checks and the report after the stop take time in proportion to that mesh");
+                         "examined); the checks and the report after the stop take time in proportion to that mesh, and are "
+                         "cut short at twice the limit (G1 and the patches' topology then unchecked, the distances "
+                         "unmeasured)");
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
@@ -409,17 +437,17 @@ Runner register_mesh(CLI::App& app) {
       "--no-initial-sample), seconds_protect, seconds_refine, seconds (total, I/O excluded), "
       "disk_condition (ok, or the number of vertices where it fails; unchecked when a cap stopped the run "
       "before its first mesh), stopped (no; max-vertices or max-seconds when "
-      "a cap ended refinement; stuck when a failure had no step to address it), min_angle, max_angle (degrees), "
+      "a cap ended refinement or twice --max-seconds the checks; stuck when a failure had no step to address it), min_angle, max_angle (degrees), "
       "hausdorff, hausdorff_out_in, hausdorff_in_out (the sampled distance between output and input surfaces, both ways "
       "and each way), feature_distance (the same between each input curve and the output's edges of that curve), "
       "hausdorff_spacing (the sample spacing, λ/2: each figure is at most that below the true one; all five relative "
-      "to the bounding-box diagonal), seconds_approximation, "
+      "to the bounding-box diagonal; unmeasured when twice --max-seconds cut the measurement short), seconds_approximation, "
       "radius_edge_ratio (the largest circumradius / shortest edge), patches_manifold, patches_topology_ok (each "
       "patch's Euler characteristic and boundary loops those of the input; -v lists them), topology_ok (the whole "
       "output's components, Euler characteristic, boundary loops, non-manifold curves and sheets those of the input), "
-      "g1 (--check). "
+      "g1 (--check; unchecked, like patches_manifold and patches_topology_ok, when twice --max-seconds cut the check short). "
       "--report FILE.json writes them as JSON with phase times, the angle histogram and the per-patch and whole topology.\n"
-      "Exit code 1 when refinement stopped early (--max-vertices, --max-seconds), the disk condition fails "
+      "Exit code 1 when refinement or the checks stopped early (--max-vertices, --max-seconds), the disk condition fails "
       "somewhere or G1 fails (--check): the mesh reached is written anyway and the failing vertices are listed on stderr.\n\n"
       "Examples:\n  delpsc mesh fandisk.off --size 1% -o fandisk.mesh\n"
       "  delpsc mesh samples/part.off -o part.mesh --report part.json --preview part.svg\n"

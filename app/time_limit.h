@@ -2,11 +2,14 @@
 // counted from the command's start (reading the model included), polled by Protect
 // (ProtectOptions::stop) and by the mesher (MesherOptions::stop) between units of work of a
 // few milliseconds (a few whole-sample sorts excepted: up to ~1 s on a 10^6-point sample). What
-// comes after the stop still runs - `mesh`'s checks, its distances to the input (sampled at
+// comes after refinement still runs - `mesh`'s checks, its distances to the input (sampled at
 // about one point per vertex after a stop instead of eight) and writing - and takes time in
-// proportion to the mesh reached, typically a half to once refinement's own.
+// proportion to the mesh reached, typically a half to once refinement's own; but on inputs
+// where the checks are slow (fans of thin triangles: four times refinement's time) they are
+// cut short at twice the limit (grace()), so that the command ends within about twice it.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -25,13 +28,15 @@ class TimeLimit {
 
   bool active() const { return seconds_ > 0; }
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  /// Remembers when it first answered true (the moment a poll stopped the run).
+  /// Remembers when it first answered true (the moment a poll stopped the run). Safe to call
+  /// from several threads (the distance measurement polls from two).
   bool passed() const {
-    if (passed_at_ >= 0) return true;
+    if (passed_at_.load(std::memory_order_relaxed) >= 0) return true;
     if (!active()) return false;
     const double t = elapsed();
     if (t < seconds_) return false;
-    passed_at_ = t;
+    double unset = -1;
+    passed_at_.compare_exchange_strong(unset, t, std::memory_order_relaxed);
     return true;
   }
 
@@ -42,11 +47,26 @@ class TimeLimit {
     return [this] { return passed(); };
   }
 
+  /// For what follows refinement (the checks, the distances to the input): true once twice the
+  /// limit has passed, so that they still run after a stop at the limit (a report of the mesh
+  /// reached) but cannot keep the command going long past it. Empty without a limit; thread-safe.
+  std::function<bool()> grace() const {
+    if (!active()) return {};
+    return [this] { return elapsed() >= 2 * seconds_; };
+  }
+
+  /// "stopped at --max-seconds 10 (after 20 s, twice the limit)": the grace's end.
+  std::string grace_ended() const {
+    char text[112];
+    std::snprintf(text, sizeof text, "stopped at --max-seconds %g (after %.3g s, twice the limit)", seconds_, elapsed());
+    return text;
+  }
+
   /// "stopped at --max-seconds 10 (after 10.2 s)", the time when passed() first said so.
   std::string stopped() const {
     char text[96];
-    std::snprintf(text, sizeof text, "stopped at --max-seconds %g (after %.3g s)", seconds_,
-                  passed_at_ >= 0 ? passed_at_ : elapsed());
+    const double at = passed_at_.load(std::memory_order_relaxed);
+    std::snprintf(text, sizeof text, "stopped at --max-seconds %g (after %.3g s)", seconds_, at >= 0 ? at : elapsed());
     return text;
   }
 
@@ -59,7 +79,7 @@ class TimeLimit {
  private:
   double seconds_;
   Clock::time_point start_;
-  mutable double passed_at_ = -1;
+  mutable std::atomic<double> passed_at_{-1};
 };
 
 /// Registers `--max-seconds` on a subcommand.

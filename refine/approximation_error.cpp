@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <atomic>
+#include <functional>
 #include <future>
 #include <limits>
 #include <span>
@@ -21,6 +23,8 @@ namespace delpsc::refine {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
+/// Thrown by FarthestSample::sample when ApproximationOptions::stop says so; caught at the top.
+struct Stopped {};
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNone = 0xffffffffu;
 
@@ -67,17 +71,22 @@ kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<cons
 class FarthestSample {
  public:
   using Neighbours = kernel::LargeVector<std::array<std::uint32_t, 3>>;
-  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree)
-      : vertices_(vertices), to_(to), tree_(tree), own_neighbours_(edge_neighbours(to)), neighbours_(own_neighbours_) {}
+  /// `stop` (ApproximationOptions::stop, may be empty) must outlive the sampler.
+  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
+                 const std::function<bool()>& stop)
+      : vertices_(vertices), to_(to), tree_(tree), own_neighbours_(edge_neighbours(to)), neighbours_(own_neighbours_),
+        stop_(stop) {}
   /// With `to`'s edge_neighbours made once for several samplers (they must outlive this one).
   FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
-                 const Neighbours& neighbours)
-      : vertices_(vertices), to_(to), tree_(tree), neighbours_(neighbours) {}
+                 const Neighbours& neighbours, const std::function<bool()>& stop)
+      : vertices_(vertices), to_(to), tree_(tree), neighbours_(neighbours), stop_(stop) {}
   // A copy's neighbours_ would point into the original's own table.
   FarthestSample(const FarthestSample&) = delete;
   FarthestSample& operator=(const FarthestSample&) = delete;
 
+  /// Throws Stopped when the stop says so (asked every 4,096 samples).
   void sample(const Vec3& p) {
+    if ((result_.samples & 4095) == 4095 && stop_ && stop_()) throw Stopped{};
     if (result_.samples++ > 0 && walk(p)) return;
     const auto closest = tree_.closest_point(p);
     const double distance = closest ? std::sqrt(closest->squared_distance) : kInfinity;
@@ -147,6 +156,7 @@ class FarthestSample {
   const kernel::AabbTree& tree_;
   Neighbours own_neighbours_;
   std::span<const std::array<std::uint32_t, 3>> neighbours_;
+  const std::function<bool()>& stop_;
   std::uint32_t current_ = kNone;
   OneSidedDistance result_;
   double largest_squared_ = 0;  // result_.distance squared
@@ -209,27 +219,11 @@ void validate(const io::SurfaceMesh& output) {
                                 " labels for " + std::to_string(output.edges.size()) + " edges");
 }
 
-}  // namespace
-
-double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
-
-double ApproximationError::feature_distance() const {
-  return std::max(feature_input_to_output.distance, feature_output_to_input.distance);
-}
-
-ApproximationError measure_approximation(const io::SurfaceMesh& output, const PolygonDomain& input,
-                                         const ApproximationOptions& options) {
-  const double h = options.sample_spacing;
-  if (!(h > 0) || !std::isfinite(h))
-    throw std::invalid_argument("measure_approximation: sample spacing must be positive and finite, not " + std::to_string(h));
-  validate(output);
+/// The sampling of measure_approximation (both surfaces, then curve by curve) into `e`; throws
+/// Stopped when `stop` says so.
+void measure_surfaces_and_curves(const io::SurfaceMesh& output, const PolygonDomain& input, double h,
+                                 const std::function<bool()>& stop, ApproximationError& e) {
   const protect::Complex& complex = input.complex();
-
-  ApproximationError e;
-  const kernel::Box3 box = input.bounding_box();
-  e.diagonal = box.empty() ? 0 : box.diagonal();
-  e.sample_spacing = h;
-
   // Both directions only read const trees (queries are thread-safe), so they run on two threads:
   // the measurement costs a third of the refinement's time at λ/2 spacing, and users wait for
   // it. Input to output is the dearer (its queries search the output's many triangles: 0.53 s
@@ -243,14 +237,14 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
   const std::span<const Triangle> input_triangles(complex.triangles);
   const std::size_t half = input_triangles.size() / 2;
   auto first_half_to_output = std::async(std::launch::async, [&] {
-    FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours);
+    FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours, stop);
     sample_surface(complex.vertices, input_triangles.first(half), h, to_output);  // corners first seen here
     return to_output.result();
   });
-  FarthestSample to_input(complex.vertices, complex.triangles, input.tree());
+  FarthestSample to_input(complex.vertices, complex.triangles, input.tree(), stop);
   sample_surface(output.vertices, output.triangles, h, to_input);
   e.output_to_input = to_input.result();
-  FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours);
+  FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours, stop);
   sample_surface(complex.vertices, input_triangles, h, to_output, half);
   e.input_to_output = to_output.result();
   keep_larger(e.input_to_output, first_half_to_output.get());
@@ -269,10 +263,10 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
     CurveApproximation& a = e.curves.emplace_back();
     a.curve = c;
     a.output_edges = output_segments.size();
-    FarthestSample to_output_curve(output.vertices, output_segments, output_curve);
+    FarthestSample to_output_curve(output.vertices, output_segments, output_curve, stop);
     sample_polyline(complex.vertices, input_segments, h, to_output_curve);
     a.input_to_output = to_output_curve.result();
-    FarthestSample to_input_curve(complex.vertices, input_segments, input_curve);
+    FarthestSample to_input_curve(complex.vertices, input_segments, input_curve, stop);
     sample_polyline(output.vertices, output_segments, h, to_input_curve);
     a.output_to_input = to_input_curve.result();
     keep_larger(e.feature_input_to_output, a.input_to_output);
@@ -283,6 +277,44 @@ ApproximationError measure_approximation(const io::SurfaceMesh& output, const Po
     // An edge of no input curve is at no finite distance from "its" curve.
     e.feature_output_to_input.distance = kInfinity;
     e.feature_output_to_input.where = edges.first_unlabelled;
+  }
+}
+
+}  // namespace
+
+double ApproximationError::hausdorff() const { return std::max(output_to_input.distance, input_to_output.distance); }
+
+double ApproximationError::feature_distance() const {
+  return std::max(feature_input_to_output.distance, feature_output_to_input.distance);
+}
+
+ApproximationError measure_approximation(const io::SurfaceMesh& output, const PolygonDomain& input,
+                                         const ApproximationOptions& options) {
+  const double h = options.sample_spacing;
+  if (!(h > 0) || !std::isfinite(h))
+    throw std::invalid_argument("measure_approximation: sample spacing must be positive and finite, not " + std::to_string(h));
+  validate(output);
+
+  ApproximationError e;
+  const kernel::Box3 box = input.bounding_box();
+  e.diagonal = box.empty() ? 0 : box.diagonal();
+  e.sample_spacing = h;
+
+  // Once the caller's stop has said true it stays true for both threads (a stop that answers
+  // true once must not leave the other thread measuring to the end).
+  std::atomic<bool> cut{false};
+  const std::function<bool()> stop =
+      options.stop ? std::function<bool()>([&cut, &options] {
+        if (cut.load(std::memory_order_relaxed)) return true;
+        if (!options.stop()) return false;
+        cut.store(true, std::memory_order_relaxed);
+        return true;
+      })
+                   : std::function<bool()>{};
+  try {
+    measure_surfaces_and_curves(output, input, h, stop, e);
+  } catch (const Stopped&) {
+    e.stopped = true;
   }
   return e;
 }

@@ -33,6 +33,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <delpsc/io/surface_mesh.h>
@@ -45,6 +46,9 @@ namespace delpsc::refine {
 struct ApproximationOptions {
   /// h: the largest distance between neighbouring samples (absolute length, > 0 and finite).
   double sample_spacing = 0;
+  /// Polled every 4,096 samples, from both threads at once (it must be thread-safe); true ends
+  /// the measurement early, with ApproximationError::stopped set. Empty: never.
+  std::function<bool()> stop;
 };
 
 /// The largest distance found from the samples of one set to another set.
@@ -81,6 +85,9 @@ struct ApproximationError {
   /// The Hausdorff distance between the input's curves and the output's feature edges, curve by
   /// curve (each input curve against the edges of the same curve), max of both ways, absolute.
   double feature_distance() const;
+  /// A stop (ApproximationOptions::stop) cut the measurement short: the figures are over the
+  /// samples taken until then, lower bounds that are not the measurement described above.
+  bool stopped = false;
   /// d / diagonal (d itself when the diagonal is 0).
   double relative(double d) const { return diagonal > 0 ? d / diagonal : d; }
 };

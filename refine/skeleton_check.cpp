@@ -170,8 +170,10 @@ bool mesh_labels_in_range(const io::SurfaceMesh& mesh, const Domain& domain, con
 
 }  // namespace
 
-SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance) {
+SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance,
+                              const std::function<bool()>& stop) {
   SkeletonReport report;
+  const auto stopped = [&] { return stop && (report.stopped = stop()); };
   const auto general = [&](const std::string& what) {
     if (report.problems.size() < 50) report.problems.push_back(what);
   };
@@ -187,6 +189,7 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
     std::vector<Vec3> ends;
     std::vector<double> parameters;
     for (std::uint32_t c = 0; c < domain.curve_count(); ++c) {
+      if (stopped()) return report;
       const std::span<const std::array<std::uint32_t, 3>> segments(edges.segments.data() + edges.offsets[c],
                                                                    edges.offsets[c + 1] - edges.offsets[c]);
       ends.clear();
@@ -220,6 +223,7 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
   SortedSides sorted;
   sorted.bits = static_cast<int>(std::bit_width(std::max<std::size_t>(mesh.vertices.size(), 2) - 1));
   kernel::KeyedIndices corners;  // (vertex, 3 i + k) for corner k of the patch's i-th triangle
+  std::size_t vertices_checked = 0;  // for the stop's polls
   for (std::uint32_t sigma = 0; sigma < domain.patch_count(); ++sigma) {
     PatchSkeleton ps;
     ps.patch = sigma;
@@ -251,6 +255,7 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
     ps.boundary_loops = components(boundary);
     // Each vertex's fan: a path or a cycle (connected, degrees <= 2).
     for (std::size_t b = 0; b < corners.size();) {
+      if ((++vertices_checked & 1023) == 0 && stopped()) return report;
       const auto v = static_cast<std::uint32_t>(corners[b].first);
       fan.clear();
       for (; b < corners.size() && corners[b].first == v; ++b) {

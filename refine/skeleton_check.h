@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,16 @@ struct PatchSkeleton {
 
 struct SkeletonReport {
   std::vector<PatchSkeleton> patches;  ///< one per patch of the domain
-  std::vector<std::string> problems;   ///< empty iff G1 holds
-  bool ok() const { return problems.empty(); }
+  std::vector<std::string> problems;   ///< empty iff G1 holds (when not stopped)
+  /// The check's stop said true before it ended: `patches` is incomplete and G1 undecided.
+  bool stopped = false;
+  bool ok() const { return problems.empty() && !stopped; }
 };
 
-/// `tolerance`: largest distance accepted between a vertex and the domain (absolute).
-SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance);
+/// `tolerance`: largest distance accepted between a vertex and the domain (absolute). `stop`
+/// (may be empty) is polled every 1,024 vertices of a patch and once per curve; true ends the
+/// check with SkeletonReport::stopped set.
+SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain, double tolerance,
+                              const std::function<bool()>& stop = {});
 
 }  // namespace delpsc::refine

@@ -8,6 +8,7 @@
 #include <random>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -403,6 +404,37 @@ TEST_CASE("empty sides and bad arguments") {
   bad = m;
   bad.vertices[2].y() = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_AS(measure(bad, cube, 0.1), std::invalid_argument);
+}
+
+TEST_CASE("a stop ends the measurement early, on both threads, and never changes a finished one") {
+  const PolygonDomain cube(io::make_cube(4));
+  const io::SurfaceMesh moved = translated(mesh_of(cube.complex()), Vec3(0, 0, 0.01));
+  // ~280,000 samples each way at h = 0.005: dozens of polls on each thread.
+  refine::ApproximationOptions o;
+  o.sample_spacing = 0.005;
+  const ApproximationError full = refine::measure_approximation(moved, cube, o);
+  REQUIRE(full.output_to_input.samples > 20 * 4096);
+  CHECK_FALSE(full.stopped);
+
+  std::atomic<int> calls{0};
+  o.stop = [&calls] {
+    ++calls;
+    return false;
+  };
+  const ApproximationError polled = refine::measure_approximation(moved, cube, o);
+  CHECK_FALSE(polled.stopped);
+  CHECK(calls.load() > 20);
+  CHECK(polled.hausdorff() == full.hausdorff());
+  CHECK(polled.feature_distance() == full.feature_distance());
+  CHECK(polled.input_to_output.samples == full.input_to_output.samples);
+
+  // True once, on the third call, then false: the other thread stops too, without asking again
+  // (up to one poll already under way when the first said true).
+  calls = 0;
+  o.stop = [&calls] { return ++calls == 3; };
+  const ApproximationError cut = refine::measure_approximation(moved, cube, o);
+  CHECK(cut.stopped);
+  CHECK(calls.load() <= 4);
 }
 
 namespace {

@@ -54,6 +54,30 @@ TEST_CASE("skeleton check: cut-open topology equals the complex's, slits include
   CHECK(check_against_complex(io::make_sample_part(32)) == 1);
 }
 
+TEST_CASE("skeleton check: a stop ends it undecided; a stop that never says so changes nothing") {
+  // 41 x 41 vertices a face: the fan loop polls after every 1,024 vertices of a patch.
+  const refine::PolygonDomain domain(io::make_cube(40));
+  const io::SurfaceMesh mesh = protect::to_surface_mesh(domain.complex());
+  const refine::SkeletonReport whole = refine::check_skeleton(mesh, domain, tolerance(domain));
+  REQUIRE(whole.ok());
+  int calls = 0;
+  const refine::SkeletonReport polled =
+      refine::check_skeleton(mesh, domain, tolerance(domain), [&calls] { return ++calls, false; });
+  CHECK(polled.ok());
+  CHECK_FALSE(polled.stopped);
+  CHECK(polled.patches.size() == whole.patches.size());
+  CHECK(calls >= 6);  // at least once in each face's fans
+  // Stopped in the first patch's fans (after the 12 curves' polls): undecided, not ok, though
+  // no problem was found.
+  calls = 0;
+  const refine::SkeletonReport cut =
+      refine::check_skeleton(mesh, domain, tolerance(domain), [&calls] { return ++calls > 12; });
+  CHECK(cut.stopped);
+  CHECK_FALSE(cut.ok());
+  CHECK(cut.problems.empty());
+  CHECK(cut.patches.empty());
+}
+
 TEST_CASE("skeleton check: a patch with an edge in three triangles is not a manifold") {
   const refine::PolygonDomain domain(io::make_cube(2));
   io::SurfaceMesh mesh = protect::to_surface_mesh(domain.complex());
