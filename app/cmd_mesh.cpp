@@ -263,9 +263,10 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
                                                         : std::to_string(failing));
   {
     const refine::MesherStats& s = stats;
-    report("stopped", std::string(s.stopped_on_request || cut_short ? "max-seconds"
+    report("stopped", std::string(s.stopped_on_request        ? "max-seconds"
                                   : s.stopped_at_max_vertices ? "max-vertices"
                                   : s.stuck                   ? "stuck"
+                                  : cut_short                 ? "max-seconds"
                                                               : "no"));
   }
   report("min_angle", refine::min_triangle_angle_degrees(mesh));
@@ -358,7 +359,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (cut_short)
     std::fprintf(stderr, "delpsc: %s: %s %s; the mesh (%zu vertices) is in %s\n", o.input.c_str(),
                  time_limit.grace_ended().c_str(),
-                 check.stopped ? "while checking the mesh (G1 and the patches' topology unchecked, distances unmeasured)"
+                 check.stopped ? approximation.stopped
+                                     ? "while checking the mesh (G1 and the patches' topology unchecked, the distances unmeasured)"
+                                     : "while checking the mesh (G1 and the patches' topology unchecked)"
                                : "while measuring the distances to the input (unmeasured)",
                  mesh.vertices.size(), o.output.c_str());
   const refine::MesherStats& s = stats;

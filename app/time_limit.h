@@ -52,13 +52,23 @@ class TimeLimit {
   /// reached) but cannot keep the command going long past it. Empty without a limit; thread-safe.
   std::function<bool()> grace() const {
     if (!active()) return {};
-    return [this] { return elapsed() >= 2 * seconds_; };
+    return [this] {
+      if (grace_ended_at_.load(std::memory_order_relaxed) >= 0) return true;
+      const double t = elapsed();
+      if (t < 2 * seconds_) return false;
+      double unset = -1;
+      grace_ended_at_.compare_exchange_strong(unset, t, std::memory_order_relaxed);
+      return true;
+    };
   }
 
-  /// "stopped at --max-seconds 10 (after 20 s, twice the limit)": the grace's end.
+  /// "stopped at --max-seconds 10 (after 20 s, twice the limit)", the time when grace() first
+  /// said so.
   std::string grace_ended() const {
     char text[112];
-    std::snprintf(text, sizeof text, "stopped at --max-seconds %g (after %.3g s, twice the limit)", seconds_, elapsed());
+    const double at = grace_ended_at_.load(std::memory_order_relaxed);
+    std::snprintf(text, sizeof text, "stopped at --max-seconds %g (after %.3g s, twice the limit)", seconds_,
+                  at >= 0 ? at : elapsed());
     return text;
   }
 
@@ -80,6 +90,7 @@ class TimeLimit {
   double seconds_;
   Clock::time_point start_;
   mutable std::atomic<double> passed_at_{-1};
+  mutable std::atomic<double> grace_ended_at_{-1};
 };
 
 /// Registers `--max-seconds` on a subcommand.

@@ -71,7 +71,7 @@ kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<cons
 class FarthestSample {
  public:
   using Neighbours = kernel::LargeVector<std::array<std::uint32_t, 3>>;
-  /// `stop` (ApproximationOptions::stop, may be empty) must outlive the sampler.
+  /// `stop`: ApproximationOptions::stop, or empty.
   FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
                  const std::function<bool()>& stop)
       : vertices_(vertices), to_(to), tree_(tree), own_neighbours_(edge_neighbours(to)), neighbours_(own_neighbours_),
@@ -156,7 +156,7 @@ class FarthestSample {
   const kernel::AabbTree& tree_;
   Neighbours own_neighbours_;
   std::span<const std::array<std::uint32_t, 3>> neighbours_;
-  const std::function<bool()>& stop_;
+  std::function<bool()> stop_;
   std::uint32_t current_ = kNone;
   OneSidedDistance result_;
   double largest_squared_ = 0;  // result_.distance squared
@@ -253,6 +253,9 @@ void measure_surfaces_and_curves(const io::SurfaceMesh& output, const PolygonDom
   const EdgesByCurve edges = group_edges_by_curve(output, curve_count);
   std::vector<Triangle> input_segments;
   for (std::uint32_t c = 0; c < curve_count; ++c) {
+    // Also here: each curve's samplers count their own samples, and short curves never reach a
+    // poll of theirs.
+    if (stop && stop()) throw Stopped{};
     const auto polyline = complex.curve_polyline(c);
     input_segments.clear();
     for (std::size_t i = 0; i + 1 < polyline.size(); ++i) input_segments.push_back({polyline[i], polyline[i + 1], polyline[i + 1]});

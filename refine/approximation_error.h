@@ -46,8 +46,9 @@ namespace delpsc::refine {
 struct ApproximationOptions {
   /// h: the largest distance between neighbouring samples (absolute length, > 0 and finite).
   double sample_spacing = 0;
-  /// Polled every 4,096 samples, from both threads at once (it must be thread-safe); true ends
-  /// the measurement early, with ApproximationError::stopped set. Empty: never.
+  /// Polled every 4,096 samples of each sampler and once per curve, from both threads at once
+  /// (it must be thread-safe); true ends the measurement early, with ApproximationError::stopped
+  /// set. Empty: never.
   std::function<bool()> stop;
 };
 

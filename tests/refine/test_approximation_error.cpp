@@ -429,12 +429,13 @@ TEST_CASE("a stop ends the measurement early, on both threads, and never changes
   CHECK(polled.input_to_output.samples == full.input_to_output.samples);
 
   // True once, on the third call, then false: the other thread stops too, without asking again
-  // (up to one poll already under way when the first said true).
+  // (a poll or two may slip in before the first thread records the stop; without the shared
+  // flag the other thread polls to its end, dozens of times).
   calls = 0;
   o.stop = [&calls] { return ++calls == 3; };
   const ApproximationError cut = refine::measure_approximation(moved, cube, o);
   CHECK(cut.stopped);
-  CHECK(calls.load() <= 4);
+  CHECK(calls.load() <= 8);
 }
 
 namespace {
