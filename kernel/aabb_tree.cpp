@@ -134,8 +134,40 @@ AabbTree::Plane AabbTree::plane_filter(const std::array<Vec3, 3>& t) {
   return plane;
 }
 
-AabbTree::AabbTree(std::span<const Vec3> vertices,
-                   std::span<const std::array<std::uint32_t, 3>> triangles) {
+// A plane through each edge pq of t and the point r = p + |q - p| n / |n| off t along its normal
+// n: the plane contains the line pq and not t's third corner s, so t lies in the closed half-space
+// on s's side, and a segment with both ends certified strictly on the other side (plane_filter's
+// bound, which holds for any three points) misses t. The plane is oriented so that s is on its
+// positive side, where plane_filter's bound certifies it; an edge where that fails (t degenerate
+// or r rounded onto p) gets an infinite bound and rejects nothing. Any r off the line would do:
+// this one keeps the plane's normal well conditioned.
+AabbTree::EdgePlanes AabbTree::edge_planes(const std::array<Vec3, 3>& t) {
+  EdgePlanes planes;
+  const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &p = t[(k + 1) % 3], &q = t[(k + 2) % 3], &s = t[k];
+    Plane& plane = planes[k];
+    plane = plane_filter({p, q, p + ((q - p).norm() / n.norm()) * n});
+    const double value = plane.normal.dot(s) - plane.offset;
+    const double error = plane.error_factor * s.cwiseAbs().maxCoeff() + plane.error_constant;
+    if (!std::isfinite(value) || !(std::abs(value) > error)) {
+      plane.error_factor = plane.error_constant = std::numeric_limits<double>::infinity();
+    } else if (value < 0) {
+      plane.normal = -plane.normal;  // exact, and the bound is the same
+      plane.offset = -plane.offset;
+    }
+  }
+  return planes;
+}
+
+bool AabbTree::thin(const std::array<Vec3, 3>& t) {
+  // height = 2 area / longest edge < longest / 16, squared: |n|² 64 < longest⁴ (n = 2 area).
+  const double longest = std::max({(t[1] - t[0]).squaredNorm(), (t[2] - t[1]).squaredNorm(), (t[0] - t[2]).squaredNorm()});
+  return 64 * (t[1] - t[0]).cross(t[2] - t[0]).squaredNorm() < longest * longest;
+}
+
+AabbTree::AabbTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+                   bool with_edge_planes) {
   const auto n = static_cast<std::uint32_t>(triangles.size());
   if (n == 0) return;
   LargeVector<BuildItem> items(n);
@@ -150,7 +182,13 @@ AabbTree::AabbTree(std::span<const Vec3> vertices,
   slots_.reserve(n);
   triangle_ids_.reserve(n);
   bounds_ = build_node(items, 0, n, 0, vertices, triangles);
-  for (Slot& slot : slots_) slot.plane = plane_filter(slot.corners);
+  for (Slot& slot : slots_) {
+    slot.plane = plane_filter(slot.corners);
+    if (with_edge_planes && thin(slot.corners)) {
+      slot.edge_planes = static_cast<std::uint32_t>(edge_planes_.size());
+      edge_planes_.push_back(edge_planes(slot.corners));
+    }
+  }
   wide_.reserve(nodes_.size() / 2 + 1);
   build_wide(0);
 }
@@ -401,6 +439,16 @@ void AabbTree::intersect_line(const Vec3& a, const Vec3& b, bool is_ray, const V
       const Box3 box = triangle_box(t);
       if (!slab.may_hit(std::array<double, 6>{box.lo.x(), box.lo.y(), box.lo.z(), box.hi.x(), box.hi.y(), box.hi.z()}))
         continue;
+      // A thin triangle's box says little: both ends beyond one of its edge planes (edge_planes).
+      if (!is_ray && slots_[slot].edge_planes != kNoEdgePlanes) {
+        const auto beyond = [&](const Plane& e) {
+          const double sa = e.normal.dot(a) - e.offset, sb = e.normal.dot(b) - e.offset;
+          return std::isfinite(sa) && std::isfinite(sb) && sa < -(e.error_factor * a_size + e.error_constant) &&
+                 sb < -(e.error_factor * b_size + e.error_constant);
+        };
+        const EdgePlanes& edges = edge_planes_[slots_[slot].edge_planes];
+        if (beyond(edges[0]) || beyond(edges[1]) || beyond(edges[2])) continue;
+      }
       const TriangleHit hit = is_ray ? intersect_ray_triangle(a, ray_direction, t[0], t[1], t[2])
                                      : intersect_segment_triangle(a, b, t[0], t[1], t[2]);
       if (hit) out.push_back({triangle_ids_[slot], hit});
@@ -424,6 +472,7 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
   if (nodes_.empty()) return std::nullopt;
   ClosestTriangle best;
   best.squared_distance = std::numeric_limits<double>::infinity();
+  const double p_size = p.cwiseAbs().maxCoeff();  // for the edge planes' bound
   // Depth first, nearer child first, pruned by the box distance. Boxes contain their triangles,
   // and the box distance is a lower bound up to rounding (a relative few eps), so a pruned box
   // could hide a triangle at most a few ulps closer than the best: harmless.
@@ -450,6 +499,22 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
     }
     for (std::uint32_t slot = node.first_or_right; slot < node.first_or_right + node.count; ++slot) {
       const auto& t = slots_[slot].corners;
+      // A thin triangle beyond one of its edge planes by more than the best distance cannot be
+      // closer: the plane separates p from it. The separation is certified (plane_filter's bound
+      // taken off: the exact plane's value is at least -v - error) and the factor covers the
+      // rounding of |n| and of the distances compared, so a skipped triangle would not have
+      // replaced the best: the answer is the one without the skip, ties included.
+      if (slots_[slot].edge_planes != kNoEdgePlanes && best.squared_distance < HUGE_VAL) {
+        // Both squares kept in the normal range (an edge of ~1e-77 has |n|² below it, whose
+        // rounding the factor would not cover).
+        const auto farther = [&](const Plane& e) {
+          const double margin = -(e.normal.dot(p) - e.offset) - (e.error_factor * p_size + e.error_constant);
+          const double n2 = e.normal.squaredNorm();
+          return margin >= 0x1p-450 && n2 >= 0x1p-900 && margin * margin > best.squared_distance * n2 * (1 + 0x1p-20);
+        };
+        const EdgePlanes& edges = edge_planes_[slots_[slot].edge_planes];
+        if (farther(edges[0]) || farther(edges[1]) || farther(edges[2])) continue;
+      }
       const ClosestOnTriangle c = closest_point_on_triangle(p, t[0], t[1], t[2]);
       const double d2 = (c.point - p).squaredNorm();
       if (d2 < best.squared_distance) best = {triangle_ids_[slot], c.point, d2};

@@ -18,11 +18,15 @@
 // a triangle is never skipped because of a box test; whether a segment meets a triangle, and
 // through which feature (vertex, edge or interior), is then decided exactly by
 // kernel::intersect_segment_triangle. A segment through an edge shared by two triangles is
-// reported by both, with kind edge.
+// reported by both, with kind edge. Before that exact test, certified floating-point filters
+// (the triangle's plane; for thin triangles, planes through their edges) skip triangles the
+// segment provably misses; they never change an answer.
 //
-// Cost: building O(n log n) time, about 200 bytes per triangle. A segment query costs
+// Cost: building O(n log n) time, about 200 bytes per triangle (350 for a thin one). A segment query costs
 // O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
-// through dense regions: it visits every leaf whose box the segment meets). Queries are const
+// through dense regions: it visits every leaf whose box the segment meets; in a fan of thin
+// triangles around a point most boxes near the point overlap, and the edge planes spare those
+// leaves' exact tests but not the visits). Queries are const
 // and thread-safe; they append to caller-provided vectors so loops need not allocate.
 #pragma once
 
@@ -99,7 +103,10 @@ class AabbTree {
   /// Builds the tree over `triangles` (vertex indices into `vertices`). Preconditions: every
   /// index < vertices.size(), coordinates finite, fewer than 2^32 triangles. Degenerate
   /// (collinear) triangles are allowed; queries never report them. O(n log n).
-  AabbTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
+  /// `edge_planes` false leaves out the thin triangles' edge planes (the filters in front of the
+  /// exact tests; the answers are the same either way, which the tests check by comparing).
+  AabbTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+           bool edge_planes = true);
 
   std::size_t size() const { return triangle_ids_.size(); }
   bool empty() const { return triangle_ids_.empty(); }
@@ -201,12 +208,28 @@ class AabbTree {
     Vec3 normal = Vec3::Zero();
     double offset = 0, error_factor = 0, error_constant = 0;
   };
-  /// One triangle in leaf order: its corners and plane side by side, read together by a query.
+  /// Planes through each edge of a thin triangle, across it, oriented so that the triangle lies
+  /// on their positive side (edge_planes in the .cpp); an edge whose plane cannot be certified
+  /// has an infinite error and rejects nothing.
+  using EdgePlanes = std::array<Plane, 3>;
+  static constexpr std::uint32_t kNoEdgePlanes = 0xffffffffu;
+  static EdgePlanes edge_planes(const std::array<Vec3, 3>& t);
+  /// Whether t's smallest height is below 1/16 of its longest edge (degenerate ones included).
+  static bool thin(const std::array<Vec3, 3>& t);
+  /// One triangle in leaf order: its corners and plane side by side, read together by a query,
+  /// and for a thin triangle the index of its edge planes.
   struct Slot {
     std::array<Vec3, 3> corners;
     Plane plane;
+    std::uint32_t edge_planes = kNoEdgePlanes;
   };
   LargeVector<Slot> slots_;
+  /// Thin triangles' boxes are much larger than they are, and in a fan of them around a point
+  /// most boxes near the point overlap: a segment or a point there meets hundreds of boxes of
+  /// triangles it is far from. Their edge planes reject those cheaply (intersect_line,
+  /// closest_point). Only for triangles whose smallest height is below 1/16 of their longest
+  /// edge: on fatter ones the box is tight enough.
+  LargeVector<EdgePlanes> edge_planes_;
   LargeVector<std::uint32_t> triangle_ids_;     // original id of each slot
 };
 

@@ -349,6 +349,80 @@ TEST_CASE("closest point equals brute force") {
   }
 }
 
+// Fans of needles around a point (the caps of a finely tessellated cylinder) and loose needles:
+// every triangle thin, so every query goes through the edge planes. Planes tilted so that no
+// coordinate is exact, at scales from 1e-3 to 1e3 (|n| far from 1 both ways); segments through
+// the needles' corners, across their edges and from a corner outwards (an end on the edge
+// planes through it, up to rounding); points on the fans, where the best distance is ~0 and the
+// edge planes skip nearly all of the boxes' triangles. The answers must be the brute force's and,
+// to the triangle, those of the same tree without the edge planes.
+TEST_CASE("fans and needles: the edge planes lose no triangle and change no closest point") {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(0, 1), s(-1, 1);
+    Soup soup;
+    const auto add_fan = [&](const Vec3& centre, const Vec3& e1, const Vec3& e2, int n) {
+      const auto c = static_cast<std::uint32_t>(soup.vertices.size());
+      soup.vertices.push_back(centre);
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        soup.vertices.push_back(centre + std::cos(a) * e1 + std::sin(a) * e2);
+      }
+      for (int i = 0; i < n; ++i)
+        soup.triangles.push_back({c, c + 1 + static_cast<std::uint32_t>(i), c + 1 + static_cast<std::uint32_t>((i + 1) % n)});
+    };
+    const Vec3 e1 = Vec3(1, 0.3, 0.2).normalized() * 0.4 * scale;
+    const Vec3 e2 = Vec3(-0.3, 1, 0.1).cross(e1).cross(e1).normalized() * -0.4 * scale;
+    add_fan(Vec3(0.5, 0.5, 0.5) * scale, e1, e2, 1500);
+    add_fan(Vec3(0.45, 0.55, 0.52) * scale, Vec3(0.1, 0.2, 0.35) * scale, Vec3(0.3, -0.25, 0.05) * scale, 700);
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 p = Vec3(u(rng), u(rng), u(rng)) * scale, d = Vec3(s(rng), s(rng), s(rng)).normalized() * 0.3 * scale;
+      const Vec3 w = d.cross(Vec3(s(rng), s(rng), s(rng))).normalized() * std::exp2(-4 - 50 * u(rng) * u(rng)) * 0.3 * scale;
+      const auto b = static_cast<std::uint32_t>(soup.vertices.size());
+      soup.vertices.insert(soup.vertices.end(), {p, p + d, p + 0.5 * d + w});
+      soup.triangles.push_back({b, b + 1, b + 2});
+    }
+    const AabbTree tree(soup.vertices, soup.triangles);
+    const AabbTree plain(soup.vertices, soup.triangles, false);
+    std::uniform_int_distribution<std::size_t> pick(0, soup.triangles.size() - 1);
+    std::size_t total = 0;
+    for (int q = 0; q < 2500; ++q) {
+      const auto& t = soup.triangles[pick(rng)];
+      const Vec3 &p0 = soup.vertices[t[0]], &p1 = soup.vertices[t[1]], &p2 = soup.vertices[t[2]];
+      const Vec3 normal = (p1 - p0).cross(p2 - p0).normalized();
+      Vec3 on;
+      switch (q % 5) {
+        case 0: case 4: on = p1; break;              // a corner, exactly
+        case 1: on = 0.5 * (p1 + p2); break;         // an edge's midpoint, rounded
+        case 2: on = p0 + u(rng) * (p1 - p0) + 0.001 * u(rng) * (p2 - p0); break;  // along the needle
+        default: on = p0 + Vec3(s(rng), s(rng), s(rng)) * 0.01 * scale; break;    // near it
+      }
+      const Vec3 d = (normal + 0.3 * Vec3(s(rng), s(rng), s(rng))) * (0.001 + 0.05 * u(rng)) * scale;
+      Vec3 a = on + d, b = on - u(rng) * d;
+      if (q % 5 == 4) a = on, b = on + (p1 - 0.5 * (p0 + p2)) * u(rng) + 0.1 * d;  // from the corner, outwards
+      std::vector<TriangleIntersection> hits, plain_hits;
+      tree.intersect_segment(a, b, hits);
+      plain.intersect_segment(a, b, plain_hits);
+      const auto got = ids_of(hits);
+      CHECK(got == brute_segment(soup, a, b));
+      CHECK(got == ids_of(plain_hits));
+      total += got.size();
+      const Vec3 p = q % 2 == 0 ? on : a;
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& tri : soup.triangles) {
+        const auto c = closest_point_on_triangle(p, soup.vertices[tri[0]], soup.vertices[tri[1]], soup.vertices[tri[2]]);
+        best = std::min(best, (c.point - p).squaredNorm());
+      }
+      const auto closest = tree.closest_point(p), plain_closest = plain.closest_point(p);
+      REQUIRE(closest.has_value());
+      REQUIRE(plain_closest.has_value());
+      CHECK(closest->squared_distance == best);
+      CHECK(closest->triangle == plain_closest->triangle);
+    }
+    CHECK(total >= 1500);  // most segments cross the needle they were drawn at, many several
+  }
+}
+
 TEST_CASE("box query equals brute force on bounding boxes") {
   std::mt19937_64 rng(5);
   const Soup s = random_soup(rng, 2000, 0.04);
