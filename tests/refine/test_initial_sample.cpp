@@ -84,6 +84,31 @@ TEST_CASE("select_separated_points keeps the spacing from balls, fixed and chose
   }
 }
 
+// The grid keeps its chains in a flat array over the candidates' box when the box holds few
+// cells for the points, and in a hash table otherwise: two clusters ten diagonals apart (~10^5
+// cells of the largest ball's size for 1,200 points) take the table, one cluster alone the
+// array; both keep the contract, balls far outside the box included.
+TEST_CASE("select_separated_points: clusters far apart (hashed cells) and one cluster (a flat array)") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int round = 0; round < 10; ++round) {
+    std::vector<Vec3> near, both;
+    for (int i = 0; i < 600; ++i) near.emplace_back(u(rng), u(rng), 0.3 * u(rng));
+    both = near;
+    for (int i = 0; i < 600; ++i) both.push_back(Vec3(10, 10, 10) + Vec3(u(rng), 0.3 * u(rng), u(rng)));
+    const std::vector<WeightedPoint> balls{WeightedPoint::from(Vec3(0.5, 0.5, 0), 0.01),
+                                           WeightedPoint::from(Vec3(10.5, 10, 10.5), 0.04),
+                                           WeightedPoint::from(Vec3(-50, 3, 3), 0.04)};
+    const std::vector<Vec3> fixed{{0.2, 0.2, 0.1}, {10.8, 10.1, 10.2}, {-40, 0, 0}};
+    const double spacing = 0.08 + 0.05 * u(rng);
+    for (const auto* candidates : {&near, &both}) {
+      const auto chosen = refine::select_separated_points(*candidates, balls, fixed, spacing);
+      CHECK(chosen.size() > 20);
+      check_selection(*candidates, balls, fixed, spacing, chosen);
+    }
+  }
+}
+
 TEST_CASE("select_separated_points with a spacing per candidate (a sizing function)") {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
