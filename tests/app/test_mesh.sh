@@ -37,6 +37,14 @@ awk -v h="$(value hausdorff)" -v o="$(value hausdorff_out_in)" -v i="$(value hau
                     s > 0.0499 && s < 0.0501) }' \
   || fail "cube: hausdorff=$(value hausdorff) out_in=$(value hausdorff_out_in) in_out=$(value hausdorff_in_out)" \
           "feature_distance=$(value feature_distance) spacing=$(value hausdorff_spacing)"
+# --no-distances: the same mesh, the distances 'unmeasured', the check still made, exit 0.
+cp "$TMP/cube.off.out.off" "$TMP/measured.off"
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% --no-distances --check -o "$TMP/cube.off.out.off"
+cmp -s "$TMP/measured.off" "$TMP/cube.off.out.off" || fail "--no-distances changed the mesh"
+for key in hausdorff hausdorff_out_in hausdorff_in_out feature_distance hausdorff_spacing; do
+  [[ "$(value $key)" == "unmeasured" ]] || fail "--no-distances: $key=$(value $key)"
+done
+[[ "$(value g1)" == "true" && "$(value stopped)" == "no" ]] || fail "--no-distances: g1=$(value g1) stopped=$(value stopped)"
 
 # The same size as a length; Medit output with labels: 8 corners, 6 patch references.
 expect 0 "" -- mesh "$TMP/cube.off" --size "$lambda" -o "$TMP/cube.mesh"
