@@ -30,15 +30,7 @@ class TimeLimit {
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
   /// Remembers when it first answered true (the moment a poll stopped the run). Safe to call
   /// from several threads (the distance measurement polls from two).
-  bool passed() const {
-    if (passed_at_.load(std::memory_order_relaxed) >= 0) return true;
-    if (!active()) return false;
-    const double t = elapsed();
-    if (t < seconds_) return false;
-    double unset = -1;
-    passed_at_.compare_exchange_strong(unset, t, std::memory_order_relaxed);
-    return true;
-  }
+  bool passed() const { return active() && reached(seconds_, passed_at_); }
 
   /// For ProtectOptions::stop and MesherOptions::stop: empty without a limit (nothing is polled).
   /// The limit must outlive the function.
@@ -52,14 +44,7 @@ class TimeLimit {
   /// reached) but cannot keep the command going long past it. Empty without a limit; thread-safe.
   std::function<bool()> grace() const {
     if (!active()) return {};
-    return [this] {
-      if (grace_ended_at_.load(std::memory_order_relaxed) >= 0) return true;
-      const double t = elapsed();
-      if (t < 2 * seconds_) return false;
-      double unset = -1;
-      grace_ended_at_.compare_exchange_strong(unset, t, std::memory_order_relaxed);
-      return true;
-    };
+    return [this] { return reached(2 * seconds_, grace_ended_at_); };
   }
 
   /// "stopped at --max-seconds 10 (after 20 s, twice the limit)", the time when grace() first
@@ -87,6 +72,17 @@ class TimeLimit {
   }
 
  private:
+  /// Whether `limit` seconds have passed; the first time it says so is kept in `at` (-1 before),
+  /// and from then on the answer is true without reading the clock.
+  bool reached(double limit, std::atomic<double>& at) const {
+    if (at.load(std::memory_order_relaxed) >= 0) return true;
+    const double t = elapsed();
+    if (t < limit) return false;
+    double unset = -1;
+    at.compare_exchange_strong(unset, t, std::memory_order_relaxed);
+    return true;
+  }
+
   double seconds_;
   Clock::time_point start_;
   mutable std::atomic<double> passed_at_{-1};
