@@ -22,12 +22,12 @@
 // (the triangle's plane; for thin triangles, planes through their edges) skip triangles the
 // segment provably misses; they never change an answer.
 //
-// Cost: building O(n log n) time, about 200 bytes per triangle (350 for a thin one). A segment query costs
-// O(log n + k) box tests for k reported triangles on well-spread input (more for long segments
-// through dense regions: it visits every leaf whose box the segment meets; in a fan of thin
-// triangles around a point most boxes near the point overlap, and the edge planes spare those
-// leaves' exact tests but not the visits). Queries are const
-// and thread-safe; they append to caller-provided vectors so loops need not allocate.
+// Cost: building O(n log n) time, about 200 bytes per triangle (350 for a thin one). A segment
+// query costs O(log n + k) box tests for k reported triangles on well-spread input (more for
+// long segments through dense regions: it visits every leaf whose box the segment meets; in a
+// fan of thin triangles around a point most boxes near the point overlap, and the edge planes
+// spare those leaves' exact tests but not the visits). Queries are const and thread-safe; they
+// append to caller-provided vectors so loops need not allocate.
 #pragma once
 
 #include <array>

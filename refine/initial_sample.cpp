@@ -28,8 +28,8 @@ class PointGrid {
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
   /// Up to this many cells a point and kDenseCells in all, the flat array (4 bytes a cell,
   /// written once; freed with the grid, before the triangulation is built). At 8 cells a point
-  /// the cube and the sphere at 0.46% took the table; at 32, 1.3 and 2.1 million cells, 5% less
-  /// time for each run (BENCHMARKS.md, session 31).
+  /// the cube and the sphere at 0.46% took the table; at 32, 1.3 and 2.1 million cells, 3-6%
+  /// less time for each run (BENCHMARKS.md, session 31).
   static constexpr std::size_t kDenseCellsPerPoint = 32, kDenseCells = std::size_t{1} << 23;
 
   /// `box`: the candidates' (every key asked of the grid is of a point in it, but added points
