@@ -60,9 +60,9 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
-  // The one step whose time is not linear in the model (pairs of overlapping boxes: d triangles
-  // around a cone's apex make d²/2 of them; flat fans are settled at once), hence the only one
-  // --max-seconds polls.
+  // The one step whose time is not linear in the model (pairs of overlapping boxes: a cone's side
+  // of d triangles and its base fanned from the centre make d² of them; a fan's own pairs, flat
+  // or a cone's, are settled at once), hence the only one --max-seconds polls.
   const protect::InputDefects defects =
       protect::find_input_defects(complex, kernel::AabbTree(complex.vertices, complex.triangles),
                                   kSelfIntersectionsCounted, 0, time_limit.poll());

@@ -179,6 +179,18 @@ void skeleton_check(benchmark::State& state, const Model& m) {
   state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
 }
 
+// The tree and find_input_defects on `soup`'s complex, as the commands run them.
+void input_checks_of(benchmark::State& state, const io::TriangleSoup& soup) {
+  const refine::PolygonDomain domain(protect::build_complex(soup));
+  const protect::Complex& complex = domain.complex();
+  const double tolerance = 1e-9 * domain.bounding_box().diagonal();
+  for (auto _ : state) {
+    const kernel::AabbTree tree(complex.vertices, complex.triangles);
+    benchmark::DoNotOptimize(protect::find_input_defects(complex, tree, 100, tolerance));
+  }
+  state.counters["triangles"] = static_cast<double>(complex.triangles.size());
+}
+
 // input_checks on a closed cylinder whose caps are fans of `rim` triangles around their centres
 // (tests/app/lib.sh's write_fan_cylinder): rim²/2 box-overlapping pairs in each cap, which a
 // certified flat fan spares (protect/self_intersections.h).
@@ -197,18 +209,26 @@ void input_checks_fan_cylinder(benchmark::State& state) {
     soup.triangles.push_back({2 * n, j, i});
     soup.triangles.push_back({2 * n + 1, n + i, n + j});
   }
-  const refine::PolygonDomain domain(protect::build_complex(soup));
-  const protect::Complex& complex = domain.complex();
-  const double tolerance = 1e-9 * domain.bounding_box().diagonal();
-  for (auto _ : state) {
-    const kernel::AabbTree tree(complex.vertices, complex.triangles);
-    benchmark::DoNotOptimize(protect::find_input_defects(complex, tree, 100, tolerance));
-  }
-  state.counters["triangles"] = static_cast<double>(complex.triangles.size());
+  input_checks_of(state, soup);
+}
+
+// input_checks on the side of an open cone of `rim` triangles around its apex: rim²/2
+// box-overlapping pairs, which a fan certified along the cone's axis spares.
+void input_checks_open_cone(benchmark::State& state) {
+  const auto n = static_cast<std::uint32_t>(state.range(0));
+  io::TriangleSoup soup;
+  for (std::uint32_t i = 0; i < n; ++i) soup.vertices.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
+  soup.vertices.emplace_back(0, 0, 1);
+  for (std::uint32_t i = 0; i < n; ++i) soup.triangles.push_back({n, i, (i + 1) % n});
+  input_checks_of(state, soup);
 }
 
 const int registered = [] {
   benchmark::RegisterBenchmark("input_checks/fan_cylinder", input_checks_fan_cylinder)
+      ->Arg(5000)
+      ->Arg(20000)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("input_checks/open_cone", input_checks_open_cone)
       ->Arg(5000)
       ->Arg(20000)
       ->Unit(benchmark::kMillisecond);

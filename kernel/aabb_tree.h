@@ -144,8 +144,8 @@ class AabbTree {
   /// for k pairs on typical input; a margin as large as the model pairs every two triangles.
   /// `group`, if not empty (one entry per triangle id), leaves out every pair of triangles of the
   /// same group (any value but kNoGroup), whole subtrees at a time: a caller that has settled a
-  /// group's own pairs otherwise (a flat fan of d triangles around a vertex: d²/2 pairs whose
-  /// boxes all overlap) does not pay for enumerating them.
+  /// group's own pairs otherwise (a fan of d triangles around a vertex, flat or a cone's side:
+  /// d²/2 pairs whose boxes all overlap) does not pay for enumerating them.
   static constexpr std::uint32_t kNoGroup = 0xffffffffu;
   void for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f, double margin = 0,
                                  std::span<const std::uint32_t> group = {}) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <delpsc/kernel/aabb_tree.h>
@@ -38,17 +39,28 @@ Sides sides(const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y, int firs
   return kernel::collinear(x[0].data(), x[1].data(), x[2].data()) ? Sides::other : Sides::coplanar;
 }
 
-// A vertex of at least this many triangles is worth certifying as a flat fan (below).
+// A vertex of at least this many triangles is worth certifying as a fan (below).
 constexpr std::size_t kFanDegree = 16;
 
-/// Per vertex: whether its triangles all lie in one plane and, seen from the vertex, cover
-/// angular sectors that meet only along edges they share - so that any two of them sharing only
-/// this vertex meet only there, which the pair test below would find after 2 coplanar segment
+/// Per vertex v: whether its triangles, seen along an axis through v, cover angular sectors that
+/// meet only along edges they share - so that any two of them sharing only v meet only there,
+/// and two sharing an edge only along it, which the pair test below would find after a few exact
 /// tests per pair. The pairs are what costs: a fan of d triangles around one vertex (a cap of a
-/// CAD cylinder, a convex polygon fanned by the reader) has d²/2 of them, all overlapping boxes
-/// (20,000 made the check run 50 s). O(d log d) exact tests per vertex of degree at least
-/// kFanDegree; others are never certified.
-std::vector<char> flat_fans(const Complex& complex) {
+/// CAD cylinder, a convex polygon fanned by the reader, the side of a cone around its apex) has
+/// d²/2 of them, all overlapping boxes (20,000 made the check run 50 s on a flat cap, 24 s on a
+/// cone). O(d log d) exact tests per vertex of degree at least kFanDegree; others are never
+/// certified.
+///
+/// Why the sectors suffice. The axis is the line through v and a point w (any point off v would
+/// do; the two tried below make the test succeed on flat fans and cones). A triangle (v, x, y)
+/// with orient3d(v, w, x, y) != 0 has a plane that does not contain the axis' direction, so the
+/// projection along the axis maps it one to one onto a triangle of the projection plane with a
+/// corner at v's image and an angle below pi there; orient3d(v, w, x, y) is the exact sign of
+/// that angle. If the sectors of two triangles that share only v meet only at v's image, a point
+/// of both projects there, and within each triangle only v does; two sectors that share the ray
+/// of a common vertex x meet only on it, whose preimage in each triangle is the edge vx. For a
+/// flat fan the axis crosses the plane and the projection is the plane itself, seen askew.
+std::vector<char> certified_fans(const Complex& complex) {
   const std::size_t nv = complex.vertices.size();
   // Each vertex's triangles, in one flat array (offsets as the complex's builders make them).
   kernel::LargeVector<std::uint32_t> triangles_at(nv, 0);
@@ -76,56 +88,78 @@ std::vector<char> flat_fans(const Complex& complex) {
       return std::array<std::uint32_t, 2>{tri[(k + 1) % 3], tri[(k + 2) % 3]};
     };
     const auto point = [&](std::uint32_t u) { return complex.vertices[u].data(); };
-    const auto [p, q] = others(around[first[v]]);
-    // One plane: every vertex of the fan on the plane of its first triangle (exact).
-    bool flat = true;
-    for (std::uint32_t i = first[v]; i < first[v + 1] && flat; ++i)
-      for (const std::uint32_t u : others(around[i])) flat = kernel::orient3d(c, point(p), point(q), point(u)) == 0;
-    if (!flat) continue;
-    // A coordinate plane the fan's plane projects onto one to one: where the first triangle's
-    // projection is not flat (exact; some such plane exists for a triangle that is not flat).
-    int a = 0, b = 1;
-    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) a = 1, b = 2;
-    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) a = 0, b = 2;
-    if (kernel::orient2d(c, point(p), point(q), a, b) == 0) continue;
-    const auto turn = [&](std::uint32_t x, std::uint32_t y) { return kernel::orient2d(c, point(x), point(y), a, b); };
-    sectors.clear();
+    // Two axes are tried: through v and w = v + the sum of the triangles' normals as given
+    // (the axis of a consistently oriented cone, however steep), then + the sum with each normal
+    // turned to agree with the first one's (a flat fan or a shallow cone in any orientation).
+    // Any w off v is exact input to the tests below; a good one is far from every triangle's
+    // plane.
+    const Vec3& centre = complex.vertices[v];
+    Vec3 as_given = Vec3::Zero(), agreeing = Vec3::Zero(), reference = Vec3::Zero();
     for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
       const auto [x, y] = others(around[i]);
-      sectors.push_back(turn(x, y) > 0 ? Sector{x, y} : Sector{y, x});
+      const Vec3 n = (complex.vertices[x] - centre).cross(complex.vertices[y] - centre);
+      if (i == first[v]) reference = n;
+      as_given += n;
+      agreeing += n.dot(reference) < 0 ? Vec3(-n) : n;
     }
-    // Directions around v by angle from the first sector's start r: [0, pi) then [pi, 2 pi),
-    // each half ordered by orient2d (exact; within a half two directions differ by less than pi).
-    const std::uint32_t r = sectors[0].start;
-    const auto same_way = [&](std::uint32_t x) {  // x on r's ray (given collinear with v and r)
-      for (const int k : {a, b})
-        if (point(r)[k] != c[k]) return (point(x)[k] > c[k]) == (point(r)[k] > c[k]);
-      return false;
-    };
-    const auto half = [&](std::uint32_t x) {
-      const int o = turn(r, x);
-      return o > 0 || (o == 0 && same_way(x)) ? 0 : 1;
-    };
-    const auto before = [&](std::uint32_t x, std::uint32_t y) {
-      const int hx = half(x), hy = half(y);
-      return hx != hy ? hx < hy : turn(x, y) > 0;
-    };
-    std::sort(sectors.begin(), sectors.end(), [&](const Sector& s, const Sector& t) { return before(s.start, t.start); });
-    // Disjoint: consecutive starts strictly increasing; a sector ends at the next one's start
-    // vertex (a shared edge) or strictly before it; none wraps past r but the last, which then
-    // ends at r's own vertex.
-    bool disjoint = true;
-    for (std::size_t i = 0; i < sectors.size() && disjoint; ++i) {
-      const Sector& s = sectors[i];
-      const bool wraps = before(s.end, s.start);
-      if (i + 1 < sectors.size()) {
-        const Sector& next = sectors[i + 1];
-        disjoint = !wraps && before(s.start, next.start) && (s.end == next.start || before(s.end, next.start));
-      } else {
-        disjoint = !wraps || s.end == sectors[0].start;
+    const auto [p0, q0] = others(around[first[v]]);
+    const double length = (complex.vertices[p0] - centre).norm();
+    if (!(length > 0) || !std::isfinite(length)) continue;
+    const auto disjoint_around = [&](const Vec3& normal) {
+      const double size = normal.norm();
+      if (!(size > 0) || !std::isfinite(size)) return false;
+      const Vec3 axis_point = centre + (length / size) * normal;
+      const double* w = axis_point.data();
+      if (axis_point == centre || !axis_point.allFinite()) return false;
+      const auto turn = [&](std::uint32_t x, std::uint32_t y) { return kernel::orient3d(c, w, point(x), point(y)); };
+      sectors.clear();
+      for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
+        const auto [x, y] = others(around[i]);
+        const int o = turn(x, y);
+        if (o == 0) return false;  // a triangle whose plane holds the axis: its sector is no sector
+        sectors.push_back(o > 0 ? Sector{x, y} : Sector{y, x});
       }
-    }
-    certified[v] = disjoint;
+      // Directions around the axis by angle from the first sector's start r: [0, pi) then
+      // [pi, 2 pi), each half ordered by the turn (exact; within a half two directions differ
+      // by less than pi).
+      const std::uint32_t r = sectors[0].start;
+      // Whether x (in the plane of the axis and r, given turn(r, x) == 0, and off the axis as
+      // every vertex here is) lies on r's side of the axis in that plane: on r's side of a
+      // second plane through the axis, one that misses r (exact; some coordinate direction is
+      // one).
+      int r_side = 0;
+      Vec3 side_point;
+      for (int k = 0; k < 3 && r_side == 0; ++k) {
+        side_point = centre + length * Vec3::Unit(k);
+        r_side = kernel::orient3d(c, w, side_point.data(), point(r));
+      }
+      if (r_side == 0) return false;
+      const auto same_way = [&](std::uint32_t x) { return kernel::orient3d(c, w, side_point.data(), point(x)) == r_side; };
+      const auto half = [&](std::uint32_t x) {
+        const int o = turn(r, x);
+        return o > 0 || (o == 0 && same_way(x)) ? 0 : 1;
+      };
+      const auto before = [&](std::uint32_t x, std::uint32_t y) {
+        const int hx = half(x), hy = half(y);
+        return hx != hy ? hx < hy : turn(x, y) > 0;
+      };
+      std::sort(sectors.begin(), sectors.end(), [&](const Sector& s, const Sector& t) { return before(s.start, t.start); });
+      // Disjoint: consecutive starts strictly increasing; a sector ends at the next one's start
+      // vertex (a shared edge) or strictly before it; none wraps past r but the last, which
+      // then ends at r's own vertex.
+      for (std::size_t i = 0; i < sectors.size(); ++i) {
+        const Sector& s = sectors[i];
+        const bool wraps = before(s.end, s.start);
+        if (i + 1 < sectors.size()) {
+          const Sector& next = sectors[i + 1];
+          if (wraps || !before(s.start, next.start) || !(s.end == next.start || before(s.end, next.start))) return false;
+        } else if (wraps && s.end != sectors[0].start) {
+          return false;
+        }
+      }
+      return true;
+    };
+    certified[v] = disjoint_around(as_given) || disjoint_around(agreeing);
   }
   return certified;
 }
@@ -219,8 +253,8 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
   };
   const double tolerance2 = tolerance * tolerance;
-  const std::vector<char> fan = max_pairs > 0 ? flat_fans(complex) : std::vector<char>{};
-  // Two triangles sharing exactly one vertex, a certified flat fan's centre: they meet only there.
+  const std::vector<char> fan = max_pairs > 0 ? certified_fans(complex) : std::vector<char>{};
+  // Two triangles sharing exactly one vertex, a certified fan's centre: they meet only there.
   const auto only_fan_centre = [&](const std::array<std::uint32_t, 3>& ia, const std::array<std::uint32_t, 3>& ib) {
     std::uint32_t shared = 0, count = 0;
     for (const std::uint32_t x : ia)
