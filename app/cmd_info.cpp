@@ -61,8 +61,9 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
   // The one step whose time is not linear in the model (pairs of overlapping boxes: a cone's side
-  // of d triangles and its base fanned from the centre make d² of them; a fan's own pairs, flat
-  // or a cone's, are settled at once), hence the only one --max-seconds polls.
+  // of d triangles against a base triangulated in one strip of thin triangles makes ~d²/4 of
+  // them; a fan's own pairs, flat or a cone's, are settled at once, and pairs across two fans by
+  // angle), hence the only one --max-seconds polls.
   const protect::InputDefects defects =
       protect::find_input_defects(complex, kernel::AabbTree(complex.vertices, complex.triangles),
                                   kSelfIntersectionsCounted, 0, time_limit.poll());

@@ -212,14 +212,20 @@ void input_checks_fan_cylinder(benchmark::State& state) {
   input_checks_of(state, soup);
 }
 
-// input_checks on the side of an open cone of `rim` triangles around its apex: rim²/2
-// box-overlapping pairs, which a fan certified along the cone's axis spares.
-void input_checks_open_cone(benchmark::State& state) {
+// input_checks on the side of a cone of `rim` triangles around its apex, open (second argument
+// 0) or on a base fanned from its centre (1): rim²/2 box-overlapping pairs in the side, which a
+// fan certified along the cone's axis spares, and rim² across side and base, which the search
+// by angle across fans spares.
+void input_checks_cone(benchmark::State& state) {
   const auto n = static_cast<std::uint32_t>(state.range(0));
   io::TriangleSoup soup;
   for (std::uint32_t i = 0; i < n; ++i) soup.vertices.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
   soup.vertices.emplace_back(0, 0, 1);
-  for (std::uint32_t i = 0; i < n; ++i) soup.triangles.push_back({n, i, (i + 1) % n});
+  soup.vertices.emplace_back(0, 0, 0);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    soup.triangles.push_back({n, i, (i + 1) % n});
+    if (state.range(1) != 0) soup.triangles.push_back({n + 1, (i + 1) % n, i});
+  }
   input_checks_of(state, soup);
 }
 
@@ -228,9 +234,11 @@ const int registered = [] {
       ->Arg(5000)
       ->Arg(20000)
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("input_checks/open_cone", input_checks_open_cone)
-      ->Arg(5000)
-      ->Arg(20000)
+  benchmark::RegisterBenchmark("input_checks/cone", input_checks_cone)
+      ->Args({5000, 0})
+      ->Args({20000, 0})
+      ->Args({5000, 1})
+      ->Args({20000, 1})
       ->Unit(benchmark::kMillisecond);
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
 #include <delpsc/kernel/predicates.h>
 
+#include "certified_fans.h"
 #include "complex_build.h"
 
 namespace delpsc::protect {
@@ -39,130 +42,10 @@ Sides sides(const std::array<Vec3, 3>& x, const std::array<Vec3, 3>& y, int firs
   return kernel::collinear(x[0].data(), x[1].data(), x[2].data()) ? Sides::other : Sides::coplanar;
 }
 
-// A vertex of at least this many triangles is worth certifying as a fan (below).
+// A vertex of at least this many triangles is worth certifying as a fan (certified_fans.h): the
+// pairs of a fan of d triangles are d²/2 (20,000 made the check run 50 s on a flat cap of a CAD
+// cylinder, 24 s on a cone); below, the certificate costs more than the pairs.
 constexpr std::size_t kFanDegree = 16;
-
-/// Per vertex v: whether its triangles, seen along an axis through v, cover angular sectors that
-/// meet only along edges they share - so that any two of them sharing only v meet only there,
-/// and two sharing an edge only along it, which the pair test below would find after a few exact
-/// tests per pair. The pairs are what costs: a fan of d triangles around one vertex (a cap of a
-/// CAD cylinder, a convex polygon fanned by the reader, the side of a cone around its apex) has
-/// d²/2 of them, all overlapping boxes (20,000 made the check run 50 s on a flat cap, 24 s on a
-/// cone). O(d log d) exact tests per vertex of degree at least kFanDegree; others are never
-/// certified.
-///
-/// Why the sectors suffice. The axis is the line through v and a point w (any point off v would
-/// do; the two tried below make the test succeed on flat fans and cones). A triangle (v, x, y)
-/// with orient3d(v, w, x, y) != 0 has a plane that does not contain the axis' direction, so the
-/// projection along the axis maps it one to one onto a triangle of the projection plane with a
-/// corner at v's image and an angle below pi there; orient3d(v, w, x, y) is the exact sign of
-/// that angle. If the sectors of two triangles that share only v meet only at v's image, a point
-/// of both projects there, and within each triangle only v does; two sectors that share the ray
-/// of a common vertex x meet only on it, whose preimage in each triangle is the edge vx. For a
-/// flat fan the axis crosses the plane and the projection is the plane itself, seen askew.
-std::vector<char> certified_fans(const Complex& complex) {
-  const std::size_t nv = complex.vertices.size();
-  // Each vertex's triangles, in one flat array (offsets as the complex's builders make them).
-  kernel::LargeVector<std::uint32_t> triangles_at(nv, 0);
-  for (const auto& t : complex.triangles)
-    for (const std::uint32_t v : t) ++triangles_at[v];
-  const kernel::LargeVector<std::uint32_t> first = detail::offsets_from_counts(triangles_at);
-  kernel::LargeVector<std::uint32_t> around(first.back());
-  {
-    kernel::LargeVector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
-      for (const std::uint32_t v : complex.triangles[t]) around[fill[v]++] = t;
-  }
-  std::vector<char> certified(nv, 0);
-  struct Sector {
-    std::uint32_t start, end;  // the other two vertices, counter-clockwise seen in the projection
-  };
-  std::vector<Sector> sectors;
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    const std::size_t degree = first[v + 1] - first[v];
-    if (degree < kFanDegree) continue;
-    const double* c = complex.vertices[v].data();
-    const auto others = [&](std::uint32_t t) {
-      const auto& tri = complex.triangles[t];
-      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-      return std::array<std::uint32_t, 2>{tri[(k + 1) % 3], tri[(k + 2) % 3]};
-    };
-    const auto point = [&](std::uint32_t u) { return complex.vertices[u].data(); };
-    // Two axes are tried: through v and w = v + the sum of the triangles' normals as given
-    // (the axis of a consistently oriented cone, however steep), then + the sum with each normal
-    // turned to agree with the first one's (a flat fan or a shallow cone in any orientation).
-    // Any w off v is exact input to the tests below; a good one is far from every triangle's
-    // plane.
-    const Vec3& centre = complex.vertices[v];
-    Vec3 as_given = Vec3::Zero(), agreeing = Vec3::Zero(), reference = Vec3::Zero();
-    for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
-      const auto [x, y] = others(around[i]);
-      const Vec3 n = (complex.vertices[x] - centre).cross(complex.vertices[y] - centre);
-      if (i == first[v]) reference = n;
-      as_given += n;
-      agreeing += n.dot(reference) < 0 ? Vec3(-n) : n;
-    }
-    const auto [p0, q0] = others(around[first[v]]);
-    const double length = (complex.vertices[p0] - centre).norm();
-    if (!(length > 0) || !std::isfinite(length)) continue;
-    const auto disjoint_around = [&](const Vec3& normal) {
-      const double size = normal.norm();
-      if (!(size > 0) || !std::isfinite(size)) return false;
-      const Vec3 axis_point = centre + (length / size) * normal;
-      const double* w = axis_point.data();
-      if (axis_point == centre || !axis_point.allFinite()) return false;
-      const auto turn = [&](std::uint32_t x, std::uint32_t y) { return kernel::orient3d(c, w, point(x), point(y)); };
-      sectors.clear();
-      for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
-        const auto [x, y] = others(around[i]);
-        const int o = turn(x, y);
-        if (o == 0) return false;  // a triangle whose plane holds the axis: its sector is no sector
-        sectors.push_back(o > 0 ? Sector{x, y} : Sector{y, x});
-      }
-      // Directions around the axis by angle from the first sector's start r: [0, pi) then
-      // [pi, 2 pi), each half ordered by the turn (exact; within a half two directions differ
-      // by less than pi).
-      const std::uint32_t r = sectors[0].start;
-      // Whether x (in the plane of the axis and r, given turn(r, x) == 0, and off the axis as
-      // every vertex here is) lies on r's side of the axis in that plane: on r's side of a
-      // second plane through the axis, one that misses r (exact; some coordinate direction is
-      // one).
-      int r_side = 0;
-      Vec3 side_point;
-      for (int k = 0; k < 3 && r_side == 0; ++k) {
-        side_point = centre + length * Vec3::Unit(k);
-        r_side = kernel::orient3d(c, w, side_point.data(), point(r));
-      }
-      if (r_side == 0) return false;
-      const auto same_way = [&](std::uint32_t x) { return kernel::orient3d(c, w, side_point.data(), point(x)) == r_side; };
-      const auto half = [&](std::uint32_t x) {
-        const int o = turn(r, x);
-        return o > 0 || (o == 0 && same_way(x)) ? 0 : 1;
-      };
-      const auto before = [&](std::uint32_t x, std::uint32_t y) {
-        const int hx = half(x), hy = half(y);
-        return hx != hy ? hx < hy : turn(x, y) > 0;
-      };
-      std::sort(sectors.begin(), sectors.end(), [&](const Sector& s, const Sector& t) { return before(s.start, t.start); });
-      // Disjoint: consecutive starts strictly increasing; a sector ends at the next one's start
-      // vertex (a shared edge) or strictly before it; none wraps past r but the last, which
-      // then ends at r's own vertex.
-      for (std::size_t i = 0; i < sectors.size(); ++i) {
-        const Sector& s = sectors[i];
-        const bool wraps = before(s.end, s.start);
-        if (i + 1 < sectors.size()) {
-          const Sector& next = sectors[i + 1];
-          if (wraps || !before(s.start, next.start) || !(s.end == next.start || before(s.end, next.start))) return false;
-        } else if (wraps && s.end != sectors[0].start) {
-          return false;
-        }
-      }
-      return true;
-    };
-    certified[v] = disjoint_around(as_given) || disjoint_around(agreeing);
-  }
-  return certified;
-}
 
 }  // namespace
 
@@ -253,13 +136,15 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
   };
   const double tolerance2 = tolerance * tolerance;
-  const std::vector<char> fan = max_pairs > 0 ? certified_fans(complex) : std::vector<char>{};
+  std::vector<std::uint32_t> fan_at;  // per vertex: its fan's index, or kNoFan
+  const std::vector<detail::Fan> fans =
+      max_pairs > 0 ? detail::certify_fans(complex, kFanDegree, fan_at) : std::vector<detail::Fan>{};
   // Two triangles sharing exactly one vertex, a certified fan's centre: they meet only there.
   const auto only_fan_centre = [&](const std::array<std::uint32_t, 3>& ia, const std::array<std::uint32_t, 3>& ib) {
     std::uint32_t shared = 0, count = 0;
     for (const std::uint32_t x : ia)
       if (x == ib[0] || x == ib[1] || x == ib[2]) shared = x, ++count;
-    return count == 1 && fan[shared];
+    return count == 1 && fan_at[shared] != detail::kNoFan;
   };
   // Each vertex is tested from one of its triangles only, its first: a triangle t near vertex v
   // pairs with every triangle of v (each box holds v), so with that one too, and no (v, t) is
@@ -287,22 +172,26 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     if (d2 > 0 && d2 < tolerance2) closest = candidate;
   };
   // A certified fan's own pairs meet only at its centre or along an edge they share: none is
-  // tested, and the descent below leaves them out whole (a fan of d triangles: d²/2 pairs, all
-  // boxes overlapping - 4e8 on a cylinder whose caps were fanned from 20,000 rim points, 5 s).
-  // Each triangle joins the fan of its smallest certified corner; pairs across two fans are
-  // tested as before.
-  constexpr std::uint32_t kNoFan = kernel::AabbTree::kNoGroup;
-  std::vector<std::uint32_t> fan_of;
-  if (std::find(fan.begin(), fan.end(), 1) != fan.end()) {
+  // tested. Each triangle joins the fan of its smallest certified corner (fan_of, a fan's index),
+  // and the descent below leaves out every pair of two triangles of fans, whole subtrees at a
+  // time (one group for them all): a fan of d triangles has d²/2 pairs, all boxes overlapping -
+  // 4e8 on a cylinder whose caps were fanned from 20,000 rim points, 5 s - and a cone's side and
+  // its base fanned from the centre d² across the two, 20 s. Pairs across two fans are searched
+  // by angle instead (across_fans).
+  constexpr std::uint32_t kNoFan = detail::kNoFan;
+  std::vector<std::uint32_t> fan_of, in_a_fan;
+  if (!fans.empty()) {
     fan_of.assign(complex.triangles.size(), kNoFan);
     for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
-      for (const std::uint32_t v : complex.triangles[t])
-        if (fan[v]) fan_of[t] = std::min(fan_of[t], v);
+      for (const std::uint32_t v : complex.triangles[t]) fan_of[t] = std::min(fan_of[t], fan_at[v]);
+    in_a_fan.assign(complex.triangles.size(), kernel::AabbTree::kNoGroup);
+    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
+      if (fan_of[t] != kNoFan) in_a_fan[t] = 0;
   }
   struct Stopped {};  // thrown out of the descent when `stop` says so
-  // Near contacts between a fan's own triangles, which the descent no longer pairs: each vertex
-  // whose owner is in a fan against that fan's triangles near it (a box query: the triangles
-  // whose box meets the vertex's, grown by twice the tolerance for rounding; near_vertex decides).
+  // Near contacts between triangles of fans, which the descent no longer pairs: each vertex whose
+  // owner is in a fan against the fans' triangles near it (a box query: the triangles whose box
+  // meets the vertex's, grown by twice the tolerance for rounding; near_vertex decides).
   const auto near_within_fans = [&] {
     std::vector<std::uint32_t> hits;
     for (std::uint32_t v = 0; v < owner.size(); ++v) {
@@ -315,29 +204,88 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       hits.clear();
       tree.triangles_in_box(box, hits);
       for (const std::uint32_t t : hits)
-        if (fan_of[t] == fan_of[owner[v]]) near_vertex(v, p, t, corners(t), complex.triangles[t]);
+        if (fan_of[t] != kNoFan) near_vertex(v, p, t, corners(t), complex.triangles[t]);
+    }
+  };
+  // Whether pair (first < second) is asked whether it crosses: not when max_pairs smaller ones
+  // were found, nor inside a fan. Then, given its corners, the answer: the max_pairs smallest
+  // crossing pairs are kept in a max-heap, so they are what a scan in order of (first, second)
+  // stopping at max_pairs would give, whatever order the pairs come in.
+  const auto asked = [&](const std::array<std::uint32_t, 2>& pair) {
+    return max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front())) &&
+           !only_fan_centre(complex.triangles[pair[0]], complex.triangles[pair[1]]);
+  };
+  const auto settle_crossing = [&](const std::array<std::uint32_t, 2>& pair, const std::array<Vec3, 3>& a,
+                                   const std::array<Vec3, 3>& b) {
+    if (!triangles_intersect_improperly(a, complex.triangles[pair[0]], b, complex.triangles[pair[1]])) return;
+    pairs.push_back(pair);
+    std::push_heap(pairs.begin(), pairs.end());
+    if (pairs.size() > max_pairs) {
+      std::pop_heap(pairs.begin(), pairs.end());
+      pairs.pop_back();
+    }
+  };
+  // Pairs across two fans: each triangle y of a later fan whose box meets the box of fan A's own
+  // triangles, against those of A's sectors its shadow along A's axis reaches (sectors_near: no
+  // other triangle of A can meet y), the axis turned through the later fan's centre where A's
+  // sectors allow it (fan_about). A cone's side against its base fanned from the centre: a few
+  // sectors per base triangle instead of every side triangle.
+  std::size_t tested = 0;
+  const auto across_fans = [&] {
+    std::vector<kernel::Box3> fan_box(fans.size());
+    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
+      if (fan_of[t] != kNoFan)
+        for (const std::uint32_t v : complex.triangles[t]) fan_box[fan_of[t]].extend(complex.vertices[v]);
+    std::vector<std::uint32_t> near_box, reached;
+    for (std::uint32_t f = 0; f < fans.size(); ++f) {
+      if (fan_box[f].empty()) continue;  // every triangle of its star is an earlier fan's
+      near_box.clear();
+      tree.triangles_in_box(fan_box[f], near_box);
+      // The later fans' triangles, fan by fan.
+      std::erase_if(near_box, [&](std::uint32_t y) { return fan_of[y] == kNoFan || fan_of[y] <= f; });
+      std::sort(near_box.begin(), near_box.end(), [&](std::uint32_t x, std::uint32_t y) {
+        return std::pair(fan_of[x], x) < std::pair(fan_of[y], y);
+      });
+      std::optional<detail::Fan> turned;
+      for (std::size_t i = 0; i < near_box.size(); ++i) {
+        const std::uint32_t y = near_box[i];
+        if (i == 0 || fan_of[y] != fan_of[near_box[i - 1]])
+          turned = detail::fan_about(complex, fans[f], complex.vertices[fans[fan_of[y]].centre]);
+        const detail::Fan& a = turned ? *turned : fans[f];
+        reached.clear();
+        detail::sectors_near(complex, a, complex.triangles[y], reached);
+        std::sort(reached.begin(), reached.end());
+        reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+        const std::array<Vec3, 3> cy = corners(y);
+        for (const std::uint32_t k : reached) {
+          const std::uint32_t x = a.sectors[k].triangle;
+          if (fan_of[x] != f) continue;  // an earlier fan's: paired from there
+          if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
+          const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
+          if (!asked(pair)) continue;
+          const std::array<Vec3, 3> cx = corners(x);
+          settle_crossing(pair, x < y ? cx : cy, x < y ? cy : cx);
+        }
+      }
     }
   };
   // Every box-overlapping pair once, from the tree against itself (a box query per triangle cost
   // twice as much), the boxes grown by the tolerance so that a vertex near a triangle pairs one
-  // of its own triangles with that one (it lies in its own triangles' boxes). The max_pairs
-  // smallest pairs that intersect are kept in a max-heap, so the crossing pairs are what a scan
-  // in order of (first, second) stopping at max_pairs would give. One descent for both checks:
-  // the near contacts took a box query per vertex, a quarter of the checks on a million
-  // triangles.
+  // of its own triangles with that one (it lies in its own triangles' boxes). One descent for
+  // both checks: the near contacts took a box query per vertex, a quarter of the checks on a
+  // million triangles.
   std::size_t visited = 0;
   try {
   if (near && !fan_of.empty()) near_within_fans();
+  if (max_pairs > 0 && !fan_of.empty()) across_fans();
   tree.for_each_overlapping_pair(
       [&](std::uint32_t x, std::uint32_t y) {
         if (stop && (++visited & 0xfffu) == 0 && stop()) throw Stopped{};
         const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
         const auto& ia = complex.triangles[pair[0]];
         const auto& ib = complex.triangles[pair[1]];
-        // What this pair is asked, decided before the corners are read (a fan's pairs are most
-        // of the pairs, and need neither test).
-        const bool crossing = max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front())) &&
-                              !only_fan_centre(ia, ib);
+        // What this pair is asked, decided before the corners are read.
+        const bool crossing = asked(pair);
         bool owns = false;
         for (int k = 0; near && k < 3; ++k) owns |= owner[ia[k]] == pair[0] || owner[ib[k]] == pair[1];
         if (!crossing && !owns) return;
@@ -347,15 +295,9 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
             if (owner[ia[k]] == pair[0]) near_vertex(ia[k], a[k], pair[1], b, ib);
             if (owner[ib[k]] == pair[1]) near_vertex(ib[k], b[k], pair[0], a, ia);
           }
-        if (!crossing || !triangles_intersect_improperly(a, ia, b, ib)) return;
-        pairs.push_back(pair);
-        std::push_heap(pairs.begin(), pairs.end());
-        if (pairs.size() > max_pairs) {
-          std::pop_heap(pairs.begin(), pairs.end());
-          pairs.pop_back();
-        }
+        if (crossing) settle_crossing(pair, a, b);
       },
-      near ? tolerance : 0, fan_of);
+      near ? tolerance : 0, in_a_fan);
   } catch (const Stopped&) {
     found.stopped = true;
   }

@@ -34,9 +34,12 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
 /// the pairs whose boxes overlap; each is decided exactly, except the pairs inside a certified
 /// fan (16 or more triangles around a vertex whose angular sectors, seen along an axis through
 /// it, are proven disjoint, exactly, once: a flat fan, the side of a cone around its apex), which
-/// the descent leaves out. O(T log T + K) time for T triangles and K box-overlapping pairs not
-/// inside such a fan (about 15 per triangle on a clean mesh; pairs across two fans whose boxes
-/// all overlap count: a cone's side and a base fanned from its centre, d² of them); O(T) memory.
+/// the descent leaves out; pairs across two such fans are found by angle about one fan's axis
+/// instead (the side of a cone and its base fanned from the centre: a few pairs per triangle
+/// rather than d² of them). O(T log T + K) time for T triangles and K box-overlapping pairs not
+/// inside fans (about 15 per triangle on a clean mesh; a fan's triangles against long thin
+/// triangles of no fan whose boxes overlap theirs count, as a cone's side against a base
+/// triangulated in one strip); O(T) memory.
 std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex,
                                                                   std::size_t max_pairs = 100);
 /// The same with `tree` an AabbTree over complex.vertices and complex.triangles, built once by a
@@ -61,11 +64,11 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 /// `near_contact` find_near_contact(complex, tree, tolerance). max_pairs 0 skips the first,
 /// a tolerance that is not positive the second. Cost as find_self_intersections, the pairs
 /// found with boxes grown by the tolerance.
-/// The near contacts inside a certified fan are found by a box query per vertex of the fan
-/// instead. `stop` (optional) is asked every 4,096 box-overlapping pairs (and 4,096 vertices of
-/// fans); when it answers true the search ends there with `stopped` set and what it found so far
-/// (a cone of 20,000 rim points with its base fanned from the centre makes 4 10^8 pairs between
-/// the two fans: 20 s).
+/// The near contacts between triangles of certified fans are found by a box query per vertex of
+/// the fans instead. `stop` (optional) is asked every 4,096 box-overlapping pairs (and 4,096
+/// vertices of fans, and 4,096 pairs across fans); when it answers true the search ends there
+/// with `stopped` set and what it found so far (a cone of 20,000 rim points on a base
+/// triangulated in one strip of thin triangles makes 10^8 pairs: seconds).
 struct InputDefects {
   std::vector<std::array<std::uint32_t, 2>> crossing;
   std::optional<std::array<std::uint32_t, 2>> near_contact;

@@ -1,0 +1,59 @@
+// Internal to protect/ (self_intersections.cpp): fans of triangles around a vertex whose pairs
+// need no exact test, and a search of such a fan's triangles by angle.
+//
+// A vertex's triangles, seen along an axis through it, cover angular sectors; when those meet
+// only along edges the triangles share, any two of the triangles that share only the vertex meet
+// only there, and two that share an edge only along it (the proof is at certify_fans in the
+// .cpp). The check for self-intersections then tests none of a fan's own pairs (d²/2 of them
+// for d triangles, all boxes overlapping: a cap of a CAD cylinder, the side of a cone), and
+// tests a triangle of another fan only against the sectors its own shadow along the axis
+// reaches (sectors_near).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <delpsc/kernel/point.h>
+
+#include "complex.h"
+
+namespace delpsc::protect::detail {
+
+/// A certified fan: its centre (a vertex of the complex) and the axis through it, and its
+/// triangles in angular order around the axis. Angles are measured, exactly, by orientations
+/// about the axis: direction 0 is r's, and a point off the axis lies in the half turn [0, pi) or
+/// [pi, 2 pi) by its orientation against r, on the line of r by its side of a second plane
+/// through the axis (through side_point, which r is off).
+struct Fan {
+  struct Sector {
+    std::uint32_t start, end;  ///< the triangle's other two vertices, anticlockwise about the axis
+    std::uint32_t triangle;    ///< index into complex.triangles
+  };
+  std::uint32_t centre = 0;
+  Vec3 axis_point = Vec3::Zero(), side_point = Vec3::Zero();
+  std::uint32_t r = 0;  ///< the vertex whose direction is angle 0
+  int r_side = 0;       ///< orient3d(centre, axis_point, side_point, r), never 0
+  std::vector<Sector> sectors;  ///< sorted by start's angle; disjoint
+};
+
+/// The fans of `complex`: every vertex of at least `min_degree` triangles whose sectors are
+/// proven disjoint about one of two axes (see the .cpp). O(d log d) exact tests per such vertex
+/// of degree d. `fan_at[v]` is v's index in the result, or kNoFan.
+inline constexpr std::uint32_t kNoFan = 0xffffffffu;
+std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, std::vector<std::uint32_t>& fan_at);
+
+/// `fan` seen about the axis through its centre and `through` (any other point), if its sectors
+/// are disjoint about that axis too: a search from another fan whose centre lies on it then
+/// finds few sectors for that fan's triangles (sectors_near), where an axis merely close to that
+/// centre leaves the triangles' shadows around the axis, each reaching many. O(d log d).
+std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through);
+
+/// Appends to `out` the indices into fan.sectors of every sector whose closed shadow along the
+/// axis may meet triangle `triangle`'s (a few more at most), or all of them when the triangle
+/// meets the axis anywhere but, perhaps, in a vertex off the fan's centre - so that a triangle
+/// of the fan not listed meets `triangle` nowhere (exact). O(log d + k) for k listed.
+void sectors_near(const Complex& complex, const Fan& fan, const std::array<std::uint32_t, 3>& triangle,
+                  std::vector<std::uint32_t>& out);
+
+}  // namespace delpsc::protect::detail
