@@ -50,9 +50,11 @@ std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, st
 std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through);
 
 /// Appends to `out` the indices into fan.sectors of every sector whose closed shadow along the
-/// axis may meet triangle `triangle`'s (a few more at most), or all of them when the triangle
-/// meets the axis anywhere but, perhaps, in a vertex off the fan's centre - so that a triangle
-/// of the fan not listed meets `triangle` nowhere (exact). O(log d + k) for k listed.
+/// axis may meet triangle `triangle`'s (and a few more; duplicates possible), or all of them
+/// when the triangle meets the axis anywhere but, perhaps, in a vertex off the fan's centre - so
+/// that a triangle of the fan not listed meets `triangle` nowhere (exact). O(log d + k) for k
+/// listed: few for a triangle whose shadow is narrow seen from the axis, up to half the sectors
+/// for a long thin one passing near it.
 void sectors_near(const Complex& complex, const Fan& fan, const std::array<std::uint32_t, 3>& triangle,
                   std::vector<std::uint32_t>& out);
 

@@ -249,8 +249,10 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       std::optional<detail::Fan> turned;
       for (std::size_t i = 0; i < near_box.size(); ++i) {
         const std::uint32_t y = near_box[i];
-        if (i == 0 || fan_of[y] != fan_of[near_box[i - 1]])
+        if (i == 0 || fan_of[y] != fan_of[near_box[i - 1]]) {
+          if (stop && stop()) throw Stopped{};  // O(d log d) each
           turned = detail::fan_about(complex, fans[f], complex.vertices[fans[fan_of[y]].centre]);
+        }
         const detail::Fan& a = turned ? *turned : fans[f];
         reached.clear();
         detail::sectors_near(complex, a, complex.triangles[y], reached);
@@ -258,9 +260,9 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
         reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
         const std::array<Vec3, 3> cy = corners(y);
         for (const std::uint32_t k : reached) {
+          if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
           const std::uint32_t x = a.sectors[k].triangle;
           if (fan_of[x] != f) continue;  // an earlier fan's: paired from there
-          if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
           const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
           if (!asked(pair)) continue;
           const std::array<Vec3, 3> cx = corners(x);

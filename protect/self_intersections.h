@@ -66,9 +66,10 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 /// found with boxes grown by the tolerance.
 /// The near contacts between triangles of certified fans are found by a box query per vertex of
 /// the fans instead. `stop` (optional) is asked every 4,096 box-overlapping pairs (and 4,096
-/// vertices of fans, and 4,096 pairs across fans); when it answers true the search ends there
-/// with `stopped` set and what it found so far (a cone of 20,000 rim points on a base
-/// triangulated in one strip of thin triangles makes 10^8 pairs: seconds).
+/// vertices of fans, 4,096 sectors searched across fans, and before each fan is turned towards
+/// another); when it answers true the search ends there with `stopped` set and what it found so
+/// far (a cone of 20,000 rim points on a base triangulated in one strip of thin triangles makes
+/// 10^8 pairs, seconds; on a base fanned from one rim corner, tens of seconds).
 struct InputDefects {
   std::vector<std::array<std::uint32_t, 2>> crossing;
   std::optional<std::array<std::uint32_t, 2>> near_contact;
