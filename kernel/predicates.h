@@ -51,6 +51,16 @@ namespace delpsc::kernel {
 /// kMaxExactWeight].
 inline constexpr double kMinExactMagnitude = 0x1p-140, kMaxExactMagnitude = 0x1p140;
 inline constexpr double kMinExactWeight = 0x1p-280, kMaxExactWeight = 0x1p280;
+/// Whether every coordinate of p is 0 or of magnitude in [kMinExactMagnitude,
+/// kMaxExactMagnitude] (false for NaN and infinities): for a point a caller constructs and then
+/// hands to the predicates.
+inline bool in_exact_range(const Vec3& p) {
+  for (int k = 0; k < 3; ++k) {
+    const double m = std::fabs(p[k]);
+    if (!(m == 0 || (kMinExactMagnitude <= m && m <= kMaxExactMagnitude))) return false;
+  }
+  return true;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Plain predicates (exact, may return 0)

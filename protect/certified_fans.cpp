@@ -42,10 +42,12 @@ Angles angles_of(const Complex& complex, const Fan& fan) {
 
 // Orients and sorts the sectors of `fan` (its centre and triangles given, in any order) about the
 // axis through its centre and `axis_point`; whether they are disjoint there (certify_fans).
-// `length`: a length near the fan's own, for the second plane's point.
+// `length`: a length near the fan's own, for the second plane's point. The points constructed
+// here are the predicates' input too: one outside their exact range (a coordinate rounded below
+// 2^-140, or past 2^140) is refused, and the fan then not certified about this axis.
 bool sort_about(const Complex& complex, Fan& fan, const Vec3& axis_point, double length) {
   const Vec3& centre = complex.vertices[fan.centre];
-  if (axis_point == centre || !axis_point.allFinite()) return false;
+  if (axis_point == centre || !kernel::in_exact_range(axis_point)) return false;
   fan.axis_point = axis_point;
   const auto point = [&](std::uint32_t u) { return complex.vertices[u].data(); };
   const double* c = centre.data();
@@ -61,7 +63,7 @@ bool sort_about(const Complex& complex, Fan& fan, const Vec3& axis_point, double
   fan.r_side = 0;
   for (int k = 0; k < 3 && fan.r_side == 0; ++k) {
     fan.side_point = centre + length * Vec3::Unit(k);
-    fan.r_side = kernel::orient3d(c, w, fan.side_point.data(), point(fan.r));
+    if (kernel::in_exact_range(fan.side_point)) fan.r_side = kernel::orient3d(c, w, fan.side_point.data(), point(fan.r));
   }
   if (fan.r_side == 0) return false;
   const Angles a = angles_of(complex, fan);
@@ -128,21 +130,18 @@ std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, st
     // plane.
     const Vec3& centre = complex.vertices[v];
     Vec3 as_given = Vec3::Zero(), agreeing = Vec3::Zero(), reference = Vec3::Zero();
-    for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
-      const auto [x, y] = others(around[i]);
-      const Vec3 n = (complex.vertices[x] - centre).cross(complex.vertices[y] - centre);
-      if (i == first[v]) reference = n;
-      as_given += n;
-      agreeing += n.dot(reference) < 0 ? Vec3(-n) : n;
-    }
-    const double length = (complex.vertices[others(around[first[v]])[0]] - centre).norm();
-    if (!(length > 0) || !std::isfinite(length)) continue;
     fan.centre = v;
     fan.sectors.clear();
     for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
       const auto [x, y] = others(around[i]);
       fan.sectors.push_back({x, y, around[i]});
+      const Vec3 n = (complex.vertices[x] - centre).cross(complex.vertices[y] - centre);
+      if (i == first[v]) reference = n;
+      as_given += n;
+      agreeing += n.dot(reference) < 0 ? Vec3(-n) : n;
     }
+    const double length = (complex.vertices[fan.sectors[0].start] - centre).norm();
+    if (!(length > 0) || !std::isfinite(length)) continue;
     const auto disjoint_around = [&](const Vec3& normal) {
       const double size = normal.norm();
       return size > 0 && std::isfinite(size) && sort_about(complex, fan, centre + (length / size) * normal, length);

@@ -10,6 +10,7 @@
 // reaches (sectors_near).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -182,11 +182,11 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   std::vector<std::uint32_t> fan_of, in_a_fan;
   if (!fans.empty()) {
     fan_of.assign(complex.triangles.size(), kNoFan);
-    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
-      for (const std::uint32_t v : complex.triangles[t]) fan_of[t] = std::min(fan_of[t], fan_at[v]);
     in_a_fan.assign(complex.triangles.size(), kernel::AabbTree::kNoGroup);
-    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
+    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
+      for (const std::uint32_t v : complex.triangles[t]) fan_of[t] = std::min(fan_of[t], fan_at[v]);
       if (fan_of[t] != kNoFan) in_a_fan[t] = 0;
+    }
   }
   struct Stopped {};  // thrown out of the descent when `stop` says so
   // Near contacts between triangles of fans, which the descent no longer pairs: each vertex whose
@@ -208,12 +208,12 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     }
   };
   // Whether pair (first < second) is asked whether it crosses: not when max_pairs smaller ones
-  // were found, nor inside a fan. Then, given its corners, the answer: the max_pairs smallest
-  // crossing pairs are kept in a max-heap, so they are what a scan in order of (first, second)
-  // stopping at max_pairs would give, whatever order the pairs come in.
+  // were found. Then, given its corners, the answer: the max_pairs smallest crossing pairs are
+  // kept in a max-heap, so they are what a scan in order of (first, second) stopping at
+  // max_pairs would give, whatever order the pairs come in. (A pair the descent lists has a
+  // triangle of no fan, which holds no fan's centre: only_fan_centre matters across fans alone.)
   const auto asked = [&](const std::array<std::uint32_t, 2>& pair) {
-    return max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front())) &&
-           !only_fan_centre(complex.triangles[pair[0]], complex.triangles[pair[1]]);
+    return max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front()));
   };
   const auto settle_crossing = [&](const std::array<std::uint32_t, 2>& pair, const std::array<Vec3, 3>& a,
                                    const std::array<Vec3, 3>& b) {
@@ -264,7 +264,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
           const std::uint32_t x = a.sectors[k].triangle;
           if (fan_of[x] != f) continue;  // an earlier fan's: paired from there
           const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
-          if (!asked(pair)) continue;
+          if (!asked(pair) || only_fan_centre(complex.triangles[x], complex.triangles[y])) continue;
           const std::array<Vec3, 3> cx = corners(x);
           settle_crossing(pair, x < y ? cx : cy, x < y ? cy : cx);
         }

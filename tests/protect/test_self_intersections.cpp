@@ -20,6 +20,7 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
+#include <delpsc/protect/certified_fans.h>
 #include <delpsc/protect/self_intersections.h>
 
 #include "support/cgal_demo_data.h"
@@ -467,6 +468,29 @@ TEST_CASE("fans around a vertex: pairs across two fans, as brute force finds the
     CHECK(protect::find_self_intersections(complex, 7) ==
           std::vector<std::array<std::uint32_t, 2>>(brute.begin(), brute.begin() + std::min<std::size_t>(7, brute.size())));
   }
+}
+
+// The axis and second-plane points a fan is certified about are constructed in floating point
+// and handed to the predicates, which are exact only for coordinates 0 or of magnitude in
+// [2^-140, 2^140]: a point outside is refused (the fan is then not certified about it), one
+// inside accepted.
+TEST_CASE("fans around a vertex: axis points outside the predicates' exact range are refused") {
+  io::TriangleSoup soup;
+  soup.vertices.push_back(Vec3::Zero());
+  const int n = 32;
+  for (int i = 0; i < n; ++i) soup.vertices.push_back(Vec3(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0));
+  for (int i = 0; i < n; ++i)
+    soup.triangles.push_back({0, static_cast<std::uint32_t>(1 + i), static_cast<std::uint32_t>(1 + (i + 1) % n)});
+  const protect::Complex complex = protect::build_complex(soup);
+  std::vector<std::uint32_t> fan_at;
+  const std::vector<protect::detail::Fan> fans = protect::detail::certify_fans(complex, 16, fan_at);
+  REQUIRE(fans.size() == 1);
+  CHECK(fan_at[0] == 0);
+  CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0, 1)).has_value());
+  CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0x1p-141, 1)).has_value() == false);
+  CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0, 0x1p141)).has_value() == false);
+  CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0, std::numeric_limits<double>::quiet_NaN())).has_value() == false);
+  CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0x1p-140, 0, 0x1p140)).has_value());
 }
 
 // A certified fan's own pairs are left out of the descent (d²/2 of them): its near contacts are
