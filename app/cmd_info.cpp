@@ -24,7 +24,7 @@ struct InfoOptions {
 
 int run(const InfoOptions& o, const GlobalOptions& g) {
   const TimeLimit time_limit(o.max_seconds);
-  const io::ReadResult model = load_model(o.input, g);
+  const io::ReadResult model = load_model(o.input, g, &time_limit);
   const auto& soup = model.soup;
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& v : soup.vertices) {

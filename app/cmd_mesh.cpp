@@ -98,7 +98,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   PhaseTimes phases;
   progress.phase("read");
   const auto t_read = Clock::now();
-  const io::ReadResult model = load_model(o.input, g);
+  const io::ReadResult model = load_model(o.input, g, &time_limit);
   phases.emplace_back("read", seconds_since(t_read));
   progress.phase("features");
   const auto t0 = Clock::now();

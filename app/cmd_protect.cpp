@@ -109,7 +109,7 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   const TimeLimit time_limit(o.max_seconds);
   if (!o.vtu_path.empty() && !ends_with_vtu(o.vtu_path))
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
-  const io::ReadResult model = load_model(o.input, g);
+  const io::ReadResult model = load_model(o.input, g, &time_limit);
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input, &time_limit);
   reject_empty_complex(complex, model, o.input, "protect");

@@ -22,10 +22,21 @@ namespace delpsc::app {
 
 /// Reads the model, drops the vertices no triangle uses (a warning says how many) and moves it
 /// next to the origin when it lies far from it (exactly; see io/model_frame.h and model_offset()).
-inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g) {
+/// A pipe without data (a FIFO nobody writes to) is waited on, with a line on stderr after a
+/// second unless -q, until `limit` (--max-seconds, if any) passes: exit code 1, nothing written.
+inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g, const TimeLimit* limit = nullptr) {
   io::ReadResult result;
+  io::PipeWait wait;
+  if (limit) wait.stop = limit->poll();
+  if (!g.quiet)
+    wait.waiting = [&] {
+      std::fprintf(stderr, "delpsc: waiting for data on %s, a pipe without a writer or data so far%s\n", path.c_str(),
+                   limit && limit->active() ? " (until --max-seconds)" : " (--max-seconds caps the wait)");
+    };
   try {
-    result = io::read_model(path);
+    result = io::read_model(path, wait);
+  } catch (const io::ReadStopped& e) {
+    throw Failure{kCheckFailed, std::string(e.what()) + ": " + limit->stopped() + " while reading; nothing written"};
   } catch (const io::Error& e) {
     throw Failure{kBadInput, e.what()};
   }

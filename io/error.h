@@ -16,7 +16,7 @@ class Error : public std::runtime_error {
 /// Throws Error naming `what` ("model file") unless `path` is something a reader can read to its
 /// end: a regular file (or a symbolic link to one) or a pipe. A directory, or a device such as
 /// /dev/zero or /dev/urandom behind a model's name, would fail obscurely or be read until memory
-/// runs out; a missing file is left to the reader's "cannot open". Defined in read_model.cpp.
+/// runs out; a missing file is left to the reader's "cannot open". Defined in input_bytes.cpp.
 void check_input_file(const std::string& path, const std::string& what);
 
 }  // namespace delpsc::io

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include <delpsc/kernel/predicates.h>
 
 #include "error.h"
+#include "input_bytes.h"
 #include "output_file.h"
 
 namespace delpsc::io {
@@ -44,28 +44,21 @@ void require_in_exact_range(const WeightedPoint& p, const std::string& path, con
   }
 }
 
-std::vector<WeightedPoint> read_binary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(path + ": cannot open for reading");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw Error(path + ": cannot determine the file size");
+std::vector<WeightedPoint> read_binary(const std::string& path, const kernel::LargeVector<char>& bytes) {
+  const std::size_t size = bytes.size();
   if (size % 32 != 0)
     throw Error(path + ": size " + std::to_string(size) +
                 " bytes is not a multiple of 32 (records of four doubles x y z w)");
-  in.seekg(0);
-  std::vector<WeightedPoint> points(static_cast<std::size_t>(size / 32));
-  if (!points.empty() &&
-      !in.read(reinterpret_cast<char*>(points.data()), static_cast<std::streamsize>(size)))
-    throw Error(path + ": read failed");
+  std::vector<WeightedPoint> points(size / 32);
+  if (size > 0) std::memcpy(points.data(), bytes.data(), size);
   for (std::size_t i = 0; i < points.size(); ++i)
     require_in_exact_range(points[i], path, "record " + std::to_string(i) + " (byte " +
                                         std::to_string(i * 32) + ")");
   return points;
 }
 
-std::vector<WeightedPoint> read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open for reading");
+std::vector<WeightedPoint> read_text(const std::string& path, const kernel::LargeVector<char>& bytes) {
+  std::istringstream in(std::string(bytes.data(), bytes.size()));
   std::vector<WeightedPoint> points;
   std::string line;
   std::size_t line_no = 0;
@@ -94,15 +87,15 @@ std::vector<WeightedPoint> read_text(const std::string& path) {
     require_in_exact_range(p, path, "line " + std::to_string(line_no));
     points.push_back(p);
   }
-  if (in.bad()) throw Error(path + ": read failed");
   return points;
 }
 
 }  // namespace
 
 std::vector<WeightedPoint> read_point_set(const std::string& path) {
-  check_input_file(path, "point set file");
-  return has_suffix(path, ".bin") ? read_binary(path) : read_text(path);
+  // A pipe is waited on for as long as its writer takes (PipeWait's default).
+  const kernel::LargeVector<char> bytes = read_input_bytes(path, "point set file");
+  return has_suffix(path, ".bin") ? read_binary(path, bytes) : read_text(path, bytes);
 }
 
 void write_point_set(const std::string& path, const std::vector<WeightedPoint>& points) {

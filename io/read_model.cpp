@@ -1,6 +1,5 @@
 #include "read_model.h"
 
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <delpsc/kernel/large_array.h>
 
 #include "error.h"
+#include "input_bytes.h"
 #include "model_parsers.h"
 
 namespace delpsc::io {
@@ -21,30 +21,6 @@ std::string lower_extension(const std::string& path) {
   for (char& c : ext)
     if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
   return ext;
-}
-
-/// The whole file in memory: every parser then works on one contiguous buffer, and the binary
-/// ones can check counts against the exact size before allocating.
-// The whole file, read straight into a LargeVector (huge pages: a model of megabytes is not
-// faulted in page by page, kernel/large_array.h).
-kernel::LargeVector<char> read_file(const std::string& path) {
-  check_input_file(path, "model file");
-  std::error_code ec;
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
-  const auto size = std::filesystem::file_size(path, ec);
-  // One byte more than the file's size, so that a single read meets the end; a pipe or a file
-  // that grows meanwhile makes the buffer grow until a read comes back short.
-  kernel::LargeVector<char> bytes(ec ? std::size_t{1} << 16 : static_cast<std::size_t>(size) + 1);
-  std::size_t used = 0;
-  for (;;) {
-    used += std::fread(bytes.data() + used, 1, bytes.size() - used, f.get());
-    if (used < bytes.size()) break;
-    bytes.resize(bytes.size() + bytes.size() / 2);
-  }
-  if (std::ferror(f.get())) throw Error(path + ": read failed (" + std::strerror(errno) + ")");
-  bytes.resize(used);
-  return bytes;
 }
 
 // A lone '\r' (not followed by '\n') ends a line, as in files from classic Mac OS and some
@@ -63,15 +39,6 @@ std::string with_lone_cr_as_newline(std::string_view text) {
 
 }  // namespace
 
-void check_input_file(const std::string& path, const std::string& what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || fs::is_regular_file(st) || fs::is_fifo(st)) return;
-  if (fs::is_directory(st)) throw Error(path + ": is a directory, not a " + what);
-  throw Error(path + ": is a device or socket, not a " + what + ": it may never end (copy the data to a file)");
-}
-
 std::optional<ModelFormat> model_format_from_path(const std::string& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".off") return ModelFormat::off;
@@ -81,7 +48,7 @@ std::optional<ModelFormat> model_format_from_path(const std::string& path) {
   return std::nullopt;
 }
 
-ReadResult read_model(const std::string& path) {
+ReadResult read_model(const std::string& path, const PipeWait& wait) {
   const auto format = model_format_from_path(path);
   if (!format) {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -89,7 +56,7 @@ ReadResult read_model(const std::string& path) {
                 (ext.empty() ? std::string("(no extension)") : "'" + ext + "'") +
                 "; expected .off, .obj, .stl or .ply");
   }
-  const kernel::LargeVector<char> bytes = read_file(path);
+  const kernel::LargeVector<char> bytes = read_input_bytes(path, "model file", wait);
   return read_model_from_memory(std::string_view(bytes.data(), bytes.size()), *format, path);
 }
 

@@ -47,6 +47,7 @@
 #include <string_view>
 #include <vector>
 
+#include "input_bytes.h"
 #include "triangle_soup.h"
 
 namespace delpsc::io {
@@ -80,8 +81,9 @@ struct ReadResult {
 /// The format named by the extension of `path` (case-insensitive .off .obj .stl .ply), or nullopt.
 std::optional<ModelFormat> model_format_from_path(const std::string& path);
 
-/// Reads a model file; the format is chosen by the extension. Throws io::Error (see above).
-ReadResult read_model(const std::string& path);
+/// Reads a model file; the format is chosen by the extension. Throws io::Error (see above), and
+/// ReadStopped when `wait.stop` gave up on a pipe without data.
+ReadResult read_model(const std::string& path, const PipeWait& wait = {});
 
 /// Parses a model already in memory (the fuzz targets and tests use it); `name` stands for the
 /// file name in messages. Throws io::Error.

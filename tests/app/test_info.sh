@@ -100,4 +100,17 @@ expect 1 "while checking the model for self-intersections" -- info "$TMP/fan_cyl
   || fail "info stopped: stopped=$(value stopped) self_intersections=$(value self_intersections) triangles=$(value triangles)"
 expect 0 "" -- info "$TMP/cube.off"
 [[ "$(value stopped)" == "no" ]] || fail "info: stopped=$(value stopped)"
+# A FIFO nobody writes to: open() used to block for ever, past --max-seconds. Now each command
+# that reads a model waits with a notice and stops at the limit (exit 1, nothing written); a
+# writer that comes after the notice is read as a file is.
+mkfifo "$TMP/lonely.off"
+expect 1 "stopped at --max-seconds 1.5" -- info "$TMP/lonely.off" --max-seconds 1.5
+grep -qF "waiting for data on $TMP/lonely.off" "$TMP/err" || fail "FIFO without writer: no notice: $(cat "$TMP/err")"
+expect 1 "no data came through the pipe" -- mesh "$TMP/lonely.off" --size 20% -o "$TMP/lonely.mesh" --max-seconds 0.5
+[[ ! -e "$TMP/lonely.mesh" ]] || fail "FIFO without writer: mesh wrote $TMP/lonely.mesh"
+expect 1 "while reading; nothing written" -- protect "$TMP/lonely.off" --size 20% --max-seconds 0.5
+(sleep 1.5; cat "$TMP/cube.off" >"$TMP/lonely.off") &
+expect 0 "waiting for data on $TMP/lonely.off" -- info "$TMP/lonely.off" --max-seconds 30
+wait
+[[ "$(value triangles)" == "12" ]] || fail "FIFO with a late writer: triangles=$(value triangles)"
 finish

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <iterator>
+#include <thread>
 #include <delpsc/io/error.h>
 #include <delpsc/io/point_set.h>
 #include <fstream>
@@ -52,6 +55,26 @@ TEST_CASE("point sets round-trip exactly through both formats") {
     io::write_point_set(path, pts);
     CHECK(io::read_point_set(path) == pts);
     std::remove(path.c_str());
+  }
+}
+
+// Both formats through a FIFO (a pipe has no size: the binary reader took it from tellg and
+// refused every pipe as "cannot determine the file size").
+TEST_CASE("point sets read through a FIFO as from a file") {
+  const std::vector<WeightedPoint> pts = {{0.5, -1, 2, 0}, {1.0 / 3, 2, 3, 0.25}, {7, 8, 9, 1}};
+  for (const char* name : {"f.bin", "f.txt"}) {
+    const std::string file = temp_path(std::string("file_") + name), fifo = temp_path(name);
+    io::write_point_set(file, pts);
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::remove(fifo.c_str());
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    std::thread writer([&] { write_file(fifo, bytes); });  // blocks until the reader opens it
+    const auto read = io::read_point_set(fifo);
+    writer.join();
+    CHECK(read == pts);
+    std::remove(fifo.c_str());
+    std::remove(file.c_str());
   }
 }
 

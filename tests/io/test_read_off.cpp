@@ -312,3 +312,43 @@ TEST_CASE("OFF: a file and a FIFO larger than the first buffer read exactly as f
                      expected.soup.triangles.end()));
   }
 }
+
+// A FIFO that nobody opens for writing used to block read_model in open() for ever, past any
+// --max-seconds. Now the wait polls PipeWait::stop and ends in ReadStopped, after telling the
+// caller once that it waits; a writer that comes late, after the notice, is still read whole.
+TEST_CASE("OFF: a FIFO without a writer stops when asked; a late writer is read") {
+  const std::string fifo = test::temp_path("lonely_fifo.off");
+  std::remove(fifo.c_str());
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  io::PipeWait wait;
+  wait.poll_interval = std::chrono::milliseconds(10);
+  wait.notice_after = std::chrono::milliseconds(30);
+  int polls = 0, notices = 0;
+  wait.stop = [&] { return ++polls == 8; };
+  wait.waiting = [&] { ++notices; };
+  std::string message;
+  try {
+    io::read_model(fifo, wait);
+  } catch (const io::ReadStopped& e) {
+    message = e.what();
+  }
+  CHECK(polls == 8);
+  CHECK(notices == 1);
+  CHECK(message.find(fifo) != std::string::npos);
+  CHECK(message.find("no data came through the pipe") != std::string::npos);
+
+  // The writer opens after the notice (it blocks in open until the reader is there).
+  polls = notices = 0;
+  wait.stop = [&] { return ++polls > 1000; };
+  std::thread writer([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    test::write_file(fifo, kCube);
+  });
+  const auto late = io::read_model(fifo, wait);
+  writer.join();
+  std::remove(fifo.c_str());
+  CHECK(notices == 1);
+  CHECK(polls >= 3);
+  CHECK(late.soup.triangles.size() == 12);
+  CHECK(late.soup.vertices.size() == 8);
+}
