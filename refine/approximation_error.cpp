@@ -71,15 +71,17 @@ kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<cons
 class FarthestSample {
  public:
   using Neighbours = kernel::LargeVector<std::array<std::uint32_t, 3>>;
+  /// The closest point of `to` to a point: a tree's, or a ClosestPointIndex's over the input.
+  using Closest = std::function<std::optional<kernel::ClosestTriangle>(const Vec3&)>;
   /// `stop`: ApproximationOptions::stop, or empty.
-  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
+  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, Closest closest,
                  const std::function<bool()>& stop)
-      : vertices_(vertices), to_(to), tree_(tree), own_neighbours_(edge_neighbours(to)), neighbours_(own_neighbours_),
-        stop_(stop) {}
+      : vertices_(vertices), to_(to), closest_(std::move(closest)), own_neighbours_(edge_neighbours(to)),
+        neighbours_(own_neighbours_), stop_(stop) {}
   /// With `to`'s edge_neighbours made once for several samplers (they must outlive this one).
-  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, const kernel::AabbTree& tree,
+  FarthestSample(std::span<const Vec3> vertices, std::span<const Triangle> to, Closest closest,
                  const Neighbours& neighbours, const std::function<bool()>& stop)
-      : vertices_(vertices), to_(to), tree_(tree), neighbours_(neighbours), stop_(stop) {}
+      : vertices_(vertices), to_(to), closest_(std::move(closest)), neighbours_(neighbours), stop_(stop) {}
   // A copy's neighbours_ would point into the original's own table.
   FarthestSample(const FarthestSample&) = delete;
   FarthestSample& operator=(const FarthestSample&) = delete;
@@ -88,7 +90,7 @@ class FarthestSample {
   void sample(const Vec3& p) {
     if ((result_.samples & 4095) == 4095 && stop_ && stop_()) throw Stopped{};
     if (result_.samples++ > 0 && walk(p)) return;
-    const auto closest = tree_.closest_point(p);
+    const auto closest = closest_(p);
     const double distance = closest ? std::sqrt(closest->squared_distance) : kInfinity;
     if (closest) current_ = closest->triangle;
     if (result_.samples == 1 || distance > result_.distance) {
@@ -108,12 +110,12 @@ class FarthestSample {
   /// from 5,000 rim points took 19.4 s to measure at 0.3%, with 64 steps 3.3 s; the CGAL demo
   /// models are unchanged (BENCHMARKS.md, "Session 30"). Beyond that the tree is asked.
   static constexpr int kWalkSteps = 64;
-  struct Closest {
+  struct Near {
     double squared_distance;
     kernel::TriangleFeature feature;
   };
 
-  Closest closest_on(const Vec3& p, std::uint32_t t) const {
+  Near closest_on(const Vec3& p, std::uint32_t t) const {
     const Triangle& c = to_[t];
     const auto q = kernel::closest_point_on_triangle(p, vertices_[c[0]], vertices_[c[1]], vertices_[c[2]]);
     return {(q.point - p).squaredNorm(), q.feature};
@@ -123,7 +125,7 @@ class FarthestSample {
   bool walk(const Vec3& p) {
     if (current_ == kNone) return false;
     std::uint32_t t = current_;
-    Closest here = closest_on(p, t);
+    Near here = closest_on(p, t);
     for (int step = 0;; ++step) {
       if (here.squared_distance <= largest_squared_) {
         current_ = t;
@@ -136,10 +138,10 @@ class FarthestSample {
                                            ? std::array<int, 2>{k, -1}
                                            : std::array<int, 2>{(k + 1) % 3, (k + 2) % 3};
       std::uint32_t next = kNone;
-      Closest best = here;
+      Near best = here;
       for (const int e : edges) {
         if (e < 0 || neighbours_[t][e] == kNone) continue;
-        const Closest c = closest_on(p, neighbours_[t][e]);
+        const Near c = closest_on(p, neighbours_[t][e]);
         if (c.squared_distance < best.squared_distance) {
           best = c;
           next = neighbours_[t][e];
@@ -153,7 +155,7 @@ class FarthestSample {
 
   std::span<const Vec3> vertices_;
   std::span<const Triangle> to_;
-  const kernel::AabbTree& tree_;
+  Closest closest_;
   Neighbours own_neighbours_;
   std::span<const std::array<std::uint32_t, 3>> neighbours_;
   std::function<bool()> stop_;
@@ -234,17 +236,21 @@ void measure_surfaces_and_curves(const io::SurfaceMesh& output, const PolygonDom
   auto neighbours_made = std::async(std::launch::async, [&] { return edge_neighbours(output.triangles); });
   const kernel::AabbTree output_tree(output.vertices, output.triangles);
   const FarthestSample::Neighbours output_neighbours = neighbours_made.get();
+  const auto on_output = [&](const Vec3& p) { return output_tree.closest_point(p); };
   const std::span<const Triangle> input_triangles(complex.triangles);
   const std::size_t half = input_triangles.size() / 2;
   auto first_half_to_output = std::async(std::launch::async, [&] {
-    FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours, stop);
+    FarthestSample to_output(output.vertices, output.triangles, on_output, output_neighbours, stop);
     sample_surface(complex.vertices, input_triangles.first(half), h, to_output);  // corners first seen here
     return to_output.result();
   });
-  FarthestSample to_input(complex.vertices, complex.triangles, input.tree(), stop);
+  // The input may have fans of thin triangles, where its tree is slow: searched by angle there.
+  const ClosestPointIndex& input_index = input.closest_point_index();
+  FarthestSample to_input(complex.vertices, complex.triangles, [&](const Vec3& p) { return input_index.closest_point(p); },
+                          stop);
   sample_surface(output.vertices, output.triangles, h, to_input);
   e.output_to_input = to_input.result();
-  FarthestSample to_output(output.vertices, output.triangles, output_tree, output_neighbours, stop);
+  FarthestSample to_output(output.vertices, output.triangles, on_output, output_neighbours, stop);
   sample_surface(complex.vertices, input_triangles, h, to_output, half);
   e.input_to_output = to_output.result();
   keep_larger(e.input_to_output, first_half_to_output.get());
@@ -266,10 +272,12 @@ void measure_surfaces_and_curves(const io::SurfaceMesh& output, const PolygonDom
     CurveApproximation& a = e.curves.emplace_back();
     a.curve = c;
     a.output_edges = output_segments.size();
-    FarthestSample to_output_curve(output.vertices, output_segments, output_curve, stop);
+    FarthestSample to_output_curve(output.vertices, output_segments,
+                                   [&](const Vec3& p) { return output_curve.closest_point(p); }, stop);
     sample_polyline(complex.vertices, input_segments, h, to_output_curve);
     a.input_to_output = to_output_curve.result();
-    FarthestSample to_input_curve(complex.vertices, input_segments, input_curve, stop);
+    FarthestSample to_input_curve(complex.vertices, input_segments,
+                                  [&](const Vec3& p) { return input_curve.closest_point(p); }, stop);
     sample_polyline(output.vertices, output_segments, h, to_input_curve);
     a.output_to_input = to_input_curve.result();
     keep_larger(e.feature_input_to_output, a.input_to_output);

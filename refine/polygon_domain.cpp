@@ -34,7 +34,9 @@ struct CoplanarSpan {
 }  // namespace
 
 PolygonDomain::PolygonDomain(protect::Complex complex)
-    : complex_(std::move(complex)), tree_(complex_.vertices, complex_.triangles) {
+    : complex_(std::move(complex)),
+      tree_(complex_.vertices, complex_.triangles),
+      closest_(complex_.vertices, complex_.triangles, tree_) {
   patch_points_.assign(complex_.patch_count(), Vec3::Zero());
   std::vector<double> best(complex_.patch_count(), -1);
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
@@ -131,7 +133,7 @@ void PolygonDomain::intersect_ray(const Vec3& origin, const Vec3& direction, std
 }
 
 std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) const {
-  const auto c = tree_.closest_point(x);
+  const auto c = closest_.closest_point(x);
   if (!c) return std::nullopt;
   const auto& t = complex_.triangles[c->triangle];
   const Vec3 &a = complex_.vertices[t[0]], &b = complex_.vertices[t[1]], &d = complex_.vertices[t[2]];

@@ -10,6 +10,8 @@
 //
 // Cost: construction O(T log T) for the tree (the complex is built beforehand); a segment query
 // O(log T + k) box tests and exact triangle tests for k triangles met, plus O(k log k) merging.
+// Closest points come from a ClosestPointIndex over the same triangles (closest_point_index.h:
+// the tree, with fans of thin triangles searched by angle).
 //
 // Coordinates: the predicates are exact anywhere, but the mesher's constructions (orthocentres,
 // surface points) lose a bit for every doubling of the model's distance from the origin over its
@@ -20,6 +22,7 @@
 
 #include <delpsc/protect/complex.h>
 
+#include "closest_point_index.h"
 #include "domain.h"
 
 namespace delpsc::refine {
@@ -37,6 +40,10 @@ class PolygonDomain final : public Domain {
 
   const protect::Complex& complex() const { return complex_; }
   const kernel::AabbTree& tree() const { return tree_; }
+  /// Closest points on the triangles, fans of thin triangles searched by angle (closest_point_index.h).
+  const ClosestPointIndex& closest_point_index() const { return closest_; }
+  PolygonDomain(const PolygonDomain&) = delete;
+  PolygonDomain& operator=(const PolygonDomain&) = delete;
 
   kernel::Box3 bounding_box() const override { return tree_.bounds(); }
 
@@ -84,6 +91,7 @@ class PolygonDomain final : public Domain {
 
   protect::Complex complex_;
   kernel::AabbTree tree_;
+  ClosestPointIndex closest_;  // over tree_ and complex_'s arrays: the domain is neither copied nor moved
   std::vector<Vec3> patch_points_;  // centroid of each patch's largest triangle
 };
 
