@@ -468,10 +468,12 @@ void AabbTree::intersect_ray(const Vec3& origin, const Vec3& direction,
   intersect_line(origin, ray_through_point(origin, direction), true, direction, out);
 }
 
-std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
+std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p, double below_squared) const {
   if (nodes_.empty()) return std::nullopt;
   ClosestTriangle best;
-  best.squared_distance = std::numeric_limits<double>::infinity();
+  // A caller's bound prunes like a best already found; only a triangle nearer replaces it.
+  best.squared_distance = below_squared;
+  bool found = false;
   const double p_size = p.cwiseAbs().maxCoeff();  // for the edge planes' bound
   // Depth first, nearer child first, pruned by the box distance. Boxes contain their triangles,
   // and the box distance is a lower bound up to rounding (a relative few eps), so a pruned box
@@ -517,9 +519,13 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p) const {
       }
       const ClosestOnTriangle c = closest_point_on_triangle(p, t[0], t[1], t[2]);
       const double d2 = (c.point - p).squaredNorm();
-      if (d2 < best.squared_distance) best = {triangle_ids_[slot], c.point, d2};
+      if (d2 < best.squared_distance) {
+        best = {triangle_ids_[slot], c.point, d2};
+        found = true;
+      }
     }
   }
+  if (!found) return std::nullopt;
   return best;
 }
 

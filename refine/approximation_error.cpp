@@ -67,7 +67,7 @@ kernel::LargeVector<std::array<std::uint32_t, 3>> edge_neighbours(std::span<cons
 /// farther than the largest distance so far within a step or two. Only the samples the walk does
 /// not settle are queried, and the result is the one querying every sample would give (up to the
 /// rounding of the distances compared). On the CGAL demo models meshed at λ = 1% and sampled at
-/// h = λ/2 this leaves one query in 40 to 60 samples.
+/// h = λ/2 this leaves one query in 10 to 150 samples (fandisk, joint, the elephant).
 class FarthestSample {
  public:
   using Neighbours = kernel::LargeVector<std::array<std::uint32_t, 3>>;
@@ -104,12 +104,14 @@ class FarthestSample {
 
  private:
   /// The walk goes on only while it gets closer, so it is short wherever triangles are not much
-  /// smaller than the sample spacing. Near the centre of a fan of thin triangles a sample is
-  /// many triangles from the previous one, and the tree is slow exactly there (the thin
-  /// triangles' boxes all overlap): with at most 4 steps, a closed cylinder with caps fanned
-  /// from 5,000 rim points took 19.4 s to measure at 0.3%, with 64 steps 3.3 s; the CGAL demo
-  /// models are unchanged (BENCHMARKS.md, "Session 30"). Beyond that the tree is asked.
-  static constexpr int kWalkSteps = 64;
+  /// smaller than the sample spacing. Across thin triangles (a fan's, a finely tessellated
+  /// cylinder's side strips) a sample is many triangles from the previous one; beyond a few steps
+  /// the query is cheaper: fans are searched by angle (closest_point_index.h) and the tree of the
+  /// rest gets their bound. Session 30 had 64 steps, when the tree alone was slow near fans;
+  /// with the index, 4 steps measure the cylinder of caps fanned from 20,000 rim points at 0.5%
+  /// in 1.3 s instead of 2.4 s, and the CGAL demo models as fast as before (BENCHMARKS.md,
+  /// "Session 33").
+  static constexpr int kWalkSteps = 4;
   struct Near {
     double squared_distance;
     kernel::TriangleFeature feature;

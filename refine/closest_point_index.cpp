@@ -150,12 +150,28 @@ void ClosestPointIndex::try_triangle(std::uint32_t t, const Vec3& p, kernel::Clo
   if (d2 < best.squared_distance) best = {t, q.point, d2};
 }
 
-void ClosestPointIndex::search_fan(const Fan& fan, const Vec3& p, kernel::ClosestTriangle& best) const {
+ClosestPointIndex::Aim ClosestPointIndex::aim(const Fan& fan, const Vec3& p) const {
+  const Vec3 d = p - fan.centre;
+  const double x = d.dot(fan.e1), y = d.dot(fan.e2);
+  const double alpha = wrap(std::atan2(y, x));
+  // The first entry starting after alpha: the one before it is the wedge that may hold p.
+  const auto after = std::upper_bound(fan.entries.begin(), fan.entries.end(), alpha,
+                                      [](double a, const Entry& e) { return a < e.start; });
+  return {std::hypot(x, y), alpha, static_cast<std::size_t>(after - fan.entries.begin())};
+}
+
+void ClosestPointIndex::probe(const Fan& fan, const Aim& at, const Vec3& p, kernel::ClosestTriangle& best) const {
   for (const std::uint32_t t : fan.always) try_triangle(t, p, best);
   const std::size_t n = fan.entries.size();
   if (n == 0) return;
-  const Vec3 d = p - fan.centre;
-  const double x = d.dot(fan.e1), y = d.dot(fan.e2), rho = std::hypot(x, y);
+  try_triangle(fan.entries[(at.first_after + n - 1) % n].triangle, p, best);
+  try_triangle(fan.entries[at.first_after % n].triangle, p, best);
+}
+
+void ClosestPointIndex::search_fan(const Fan& fan, const Aim& at, const Vec3& p, kernel::ClosestTriangle& best) const {
+  const std::size_t n = fan.entries.size();
+  if (n == 0) return;
+  const double rho = at.rho, alpha = at.alpha;
   // The angle from p's direction beyond which no wedge holds a point nearer than the best so
   // far: ρ sin(Δ) >= best there (the bound needs Δ <= π/2; beyond, it is ρ itself). Infinite
   // while p is no farther from the axis than from the best point: every wedge may then be nearer.
@@ -164,25 +180,16 @@ void ClosestPointIndex::search_fan(const Fan& fan, const Vec3& p, kernel::Closes
     if (!(b < rho)) return HUGE_VAL;
     return std::asin(b / rho) * (1 + 1e-12) + kMargin;
   };
-  const double alpha = wrap(std::atan2(y, x));
-  // First entry starting after alpha; backwards from the one before it (its wedge may hold p),
-  // then forwards. Each side stops where the angle to the nearest wedge it could still reach
-  // passes the reach, which shrinks as the best improves. The two wedges at p's direction are
-  // tried first: a best found elsewhere (the rest's tree, another fan) may be far off and leave
-  // no reach at all.
-  const auto after = std::upper_bound(fan.entries.begin(), fan.entries.end(), alpha,
-                                      [](double a, const Entry& e) { return a < e.start; });
-  const std::size_t first_after = static_cast<std::size_t>(after - fan.entries.begin());
-  try_triangle(fan.entries[(first_after + n - 1) % n].triangle, p, best);
-  try_triangle(fan.entries[first_after % n].triangle, p, best);
   double r = reach();
   // p nearer the axis than the best point: no angle prunes anything.
   if (r == HUGE_VAL) {
     for (const Entry& e : fan.entries) try_triangle(e.triangle, p, best);
     return;
   }
+  // Backwards from the wedge that may hold p, then forwards; each side stops where the angle to
+  // the nearest wedge it could still reach passes the reach, which shrinks as the best improves.
   for (std::size_t step = 0; step < n; ++step) {
-    const Entry& e = fan.entries[(first_after + n - 1 - step) % n];
+    const Entry& e = fan.entries[(at.first_after + n - 1 - step) % n];
     const double behind = wrap(alpha - e.start);  // p's angle past the wedge's first direction
     if (behind - fan.widest >= r) break;
     if (behind - e.width < r) {
@@ -192,7 +199,7 @@ void ClosestPointIndex::search_fan(const Fan& fan, const Vec3& p, kernel::Closes
     }
   }
   for (std::size_t step = 0; step < n; ++step) {
-    const Entry& e = fan.entries[(first_after + step) % n];
+    const Entry& e = fan.entries[(at.first_after + step) % n];
     const double ahead = wrap(e.start - alpha);
     if (ahead >= r) break;
     const double before = best.squared_distance;
@@ -204,12 +211,18 @@ void ClosestPointIndex::search_fan(const Fan& fan, const Vec3& p, kernel::Closes
 std::optional<kernel::ClosestTriangle> ClosestPointIndex::closest_point(const Vec3& p) const {
   if (fans_.empty()) return all_->closest_point(p);
   kernel::ClosestTriangle best{0, Vec3::Zero(), HUGE_VAL};
-  if (const auto c = rest_.closest_point(p)) {
+  // First each fan's wedges at p's direction: cheap, and near a fan they bound the tree query of
+  // the rest tightly (on a cylinder's cap its side is far, and finding the nearest of its strips
+  // without a bound was most of the query). Without a bound a fan's angular search would reach
+  // far too: the best found anywhere comes first.
+  for (const Fan& fan : fans_)
+    if (fan.box.squared_distance(p) < best.squared_distance) probe(fan, aim(fan, p), p, best);
+  if (const auto c = rest_.closest_point(p, best.squared_distance)) {
     best = *c;
     best.triangle = rest_ids_[c->triangle];
   }
   for (const Fan& fan : fans_)
-    if (fan.box.squared_distance(p) < best.squared_distance) search_fan(fan, p, best);
+    if (fan.box.squared_distance(p) < best.squared_distance) search_fan(fan, aim(fan, p), p, best);
   if (!(best.squared_distance < HUGE_VAL)) return std::nullopt;
   return best;
 }

@@ -76,8 +76,18 @@ class ClosestPointIndex {
   /// the two axes; nullopt when its wedges overlap more than twice around either way.
   std::optional<Fan> make_fan(std::uint32_t centre, std::span<const std::uint32_t> members) const;
   std::optional<Fan> fan_about(std::uint32_t centre, std::span<const std::uint32_t> members, const Vec3& axis) const;
-  /// Lowers `best` (squared distance) to p's closest point on the fan's triangles, if nearer.
-  void search_fan(const Fan& fan, const Vec3& p, kernel::ClosestTriangle& best) const;
+  /// Where p is seen from a fan: its distance from the axis, its angle, and the first entry
+  /// starting after that angle.
+  struct Aim {
+    double rho, alpha;
+    std::size_t first_after;
+  };
+  Aim aim(const Fan& fan, const Vec3& p) const;
+  /// Lowers `best` (squared distance) by the fan's always-tried triangles and the two wedges at
+  /// p's direction.
+  void probe(const Fan& fan, const Aim& at, const Vec3& p, kernel::ClosestTriangle& best) const;
+  /// Lowers `best` to p's closest point on the fan's wedges (after probe), if nearer.
+  void search_fan(const Fan& fan, const Aim& at, const Vec3& p, kernel::ClosestTriangle& best) const;
   void try_triangle(std::uint32_t t, const Vec3& p, kernel::ClosestTriangle& best) const;
 
   std::span<const Vec3> vertices_;

@@ -346,6 +346,13 @@ TEST_CASE("closest point equals brute force") {
     REQUIRE(got.has_value());
     CHECK(got->squared_distance == doctest::Approx(best).epsilon(1e-12));
     CHECK((got->point - p).squaredNorm() == doctest::Approx(got->squared_distance).epsilon(1e-12));
+    // A bound above the distance changes nothing; one at or below it leaves no triangle.
+    const auto bounded = tree.closest_point(p, 1.01 * got->squared_distance + 1e-300);
+    REQUIRE(bounded.has_value());
+    CHECK(bounded->triangle == got->triangle);
+    CHECK(bounded->squared_distance == got->squared_distance);
+    CHECK_FALSE(tree.closest_point(p, 0.99 * got->squared_distance).has_value());
+    CHECK_FALSE(tree.closest_point(p, got->squared_distance).has_value());
   }
 }
 
