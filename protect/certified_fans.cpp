@@ -107,6 +107,9 @@ std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, st
   kernel::LargeVector<std::uint32_t> triangles_at(nv, 0);
   for (const auto& t : complex.triangles)
     for (const std::uint32_t v : t) ++triangles_at[v];
+  // Most models have no vertex of that degree: no incidence lists for them.
+  if (std::none_of(triangles_at.begin(), triangles_at.end(), [&](std::uint32_t d) { return d >= min_degree; }))
+    return fans;
   const kernel::LargeVector<std::uint32_t> first = detail::offsets_from_counts(triangles_at);
   kernel::LargeVector<std::uint32_t> around(first.back());
   {
@@ -174,22 +177,34 @@ std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3&
 // the axis' image on the shadow). The sectors meeting a closed wedge [a, b] are the one holding
 // a, the one before it (which may end exactly at a), and those starting within [a, b], which
 // follow it in angular order: the sectors are disjoint and each under pi.
+// A segment's shadow is the same argument's with two points: it lies in the closed wedge between
+// its ends' directions when those differ by less than pi, and a pair in one direction or in
+// opposite ones is searched as for a triangle (one ray, or every sector).
 void sectors_near(const Complex& complex, const Fan& fan, const std::array<std::uint32_t, 3>& triangle,
+                  std::vector<std::uint32_t>& out) {
+  const std::array<const double*, 3> points{complex.vertices[triangle[0]].data(), complex.vertices[triangle[1]].data(),
+                                            complex.vertices[triangle[2]].data()};
+  sectors_near(complex, fan, points, out);
+}
+
+void sectors_near(const Complex& complex, const Fan& fan, std::span<const double* const> points,
                   std::vector<std::uint32_t>& out) {
   const std::size_t n = fan.sectors.size();
   const Angles a = angles_of(complex, fan);
-  std::array<const double*, 3> off{};  // t's vertices off the axis
+  std::array<const double*, 3> off{};  // the points off the axis
   int count = 0;
-  for (const std::uint32_t u : triangle) {
-    const double* p = complex.vertices[u].data();
+  for (const double* p : points.first(std::min<std::size_t>(points.size(), 3)))
     if (!kernel::collinear(a.c, a.w, p)) off[count++] = p;
-  }
   const auto all = [&] {
     for (std::uint32_t k = 0; k < n; ++k) out.push_back(k);
   };
   // Two vertices on the axis (t's plane holds it), or one with t's plane holding it: t may meet
-  // the axis anywhere along a segment, perhaps at the centre.
-  if (count < 2 || (count == 2 && a.turn(off[0], off[1]) == 0)) return all();
+  // the axis anywhere along a segment, perhaps at the centre. A segment (two points) with both
+  // ends in one direction - parallel to the axis, as a dual edge near a flat fan is - has its
+  // shadow on that ray (searched below); with them in opposite ones it crosses the axis' image.
+  if (count < 2) return all();
+  if (count == 2 && a.turn(off[0], off[1]) == 0 && (points.size() == 3 || a.half(off[0]) != a.half(off[1])))
+    return all();
   if (count == 3) {
     const int s0 = a.turn(off[0], off[1]), s1 = a.turn(off[1], off[2]), s2 = a.turn(off[2], off[0]);
     if ((s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0)) return all();  // t meets the axis

@@ -1,5 +1,6 @@
-// Internal to protect/ (self_intersections.cpp): fans of triangles around a vertex whose pairs
-// need no exact test, and a search of such a fan's triangles by angle.
+// Internal to the library (protect/self_intersections.cpp, refine/polygon_domain.cpp): fans of
+// triangles around a vertex whose pairs need no exact test, and a search of such a fan's
+// triangles by angle (for a triangle, or a segment of the mesher's dual edges).
 //
 // A vertex's triangles, seen along an axis through it, cover angular sectors; when those meet
 // only along edges the triangles share, any two of the triangles that share only the vertex meet
@@ -13,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <delpsc/kernel/point.h>
@@ -57,6 +59,11 @@ std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3&
 /// listed: few for a triangle whose shadow is narrow seen from the axis, up to half the sectors
 /// for a long thin one passing near it.
 void sectors_near(const Complex& complex, const Fan& fan, const std::array<std::uint32_t, 3>& triangle,
+                  std::vector<std::uint32_t>& out);
+/// The same for the convex hull of two or three points given by their coordinates (a segment
+/// [p, q] as {p, q}), which must lie in the predicates' exact range (kernel::in_exact_range): a
+/// sector not listed holds no fan triangle that meets the hull (exact).
+void sectors_near(const Complex& complex, const Fan& fan, std::span<const double* const> points,
                   std::vector<std::uint32_t>& out);
 
 }  // namespace delpsc::protect::detail

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include <delpsc/kernel/bits.h>
+#include <delpsc/kernel/predicates.h>
 
 #include "surface_lattice.h"
 #include "triangle_clusters.h"
@@ -33,10 +34,33 @@ struct CoplanarSpan {
 
 }  // namespace
 
-PolygonDomain::PolygonDomain(protect::Complex complex)
+PolygonDomain::PolygonDomain(protect::Complex complex, bool search_fans)
     : complex_(std::move(complex)),
       tree_(complex_.vertices, complex_.triangles),
       closest_(complex_.vertices, complex_.triangles, tree_) {
+  if (search_fans) {
+    std::vector<std::uint32_t> fan_at;
+    std::vector<protect::detail::Fan> fans =
+        protect::detail::certify_fans(complex_, ClosestPointIndex::kMinFanDegree, fan_at);
+    if (!fans.empty()) {
+      fan_owner_.assign(complex_.triangles.size(), protect::detail::kNoFan);
+      for (protect::detail::Fan& fan : fans) {
+        SegmentFan& f = segment_fans_.emplace_back();
+        for (const auto& sector : fan.sectors) {
+          std::uint32_t& owner = fan_owner_[sector.triangle];
+          if (owner == protect::detail::kNoFan) owner = static_cast<std::uint32_t>(segment_fans_.size() - 1);
+          for (const std::uint32_t v : complex_.triangles[sector.triangle]) f.box.extend(complex_.vertices[v]);
+        }
+        f.fan = std::move(fan);
+      }
+      for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t)
+        if (fan_owner_[t] == protect::detail::kNoFan) {
+          rest_triangles_.push_back(complex_.triangles[t]);
+          rest_ids_.push_back(t);
+        }
+      rest_tree_ = kernel::AabbTree(complex_.vertices, rest_triangles_);
+    }
+  }
   patch_points_.assign(complex_.patch_count(), Vec3::Zero());
   std::vector<double> best(complex_.patch_count(), -1);
   for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
@@ -62,6 +86,14 @@ CurveSegment PolygonDomain::curve_segment_in_ball(std::uint32_t c, double s, dou
 void PolygonDomain::merge_hits(std::vector<kernel::TriangleIntersection>& hits, const Vec3& a, const Vec3& b,
                                std::vector<SurfaceHit>& out) const {
   out.clear();
+  // With fans, in triangle order: what follows then depends on the set of hits alone, not on
+  // the order the rest's tree and the fans' searches found them in (ties below keep the first).
+  // Without, the tree's order, as before fans were searched (the same meshes, bit for bit).
+  if (!segment_fans_.empty())
+    std::sort(hits.begin(), hits.end(),
+              [](const kernel::TriangleIntersection& x, const kernel::TriangleIntersection& y) {
+                return x.triangle < y.triangle;
+              });
   thread_local std::vector<KeyedHit> crossings;
   crossings.clear();
   std::map<std::uint32_t, CoplanarSpan> spans;
@@ -120,9 +152,55 @@ void PolygonDomain::merge_hits(std::vector<kernel::TriangleIntersection>& hits, 
 
 void PolygonDomain::intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const {
   thread_local std::vector<kernel::TriangleIntersection> hits;
-  hits.clear();
-  tree_.intersect_segment(a, b, hits);
+  collect_hits(a, b, hits);
   merge_hits(hits, a, b, out);
+}
+
+// A fan triangle the segment meets lies in a sector near the segment's shadow (sectors_near,
+// exact), and each listed triangle gets the tree's own exact test with its corners in the same
+// order, so the hits are the tree's, bit for bit; only their order differs, which merge_hits
+// does not see.
+void PolygonDomain::intersect_segment_with_fans(const Vec3& a, const Vec3& b,
+                                                std::vector<kernel::TriangleIntersection>& hits) const {
+  rest_tree_.intersect_segment(a, b, hits);
+  for (auto& h : hits) h.triangle = rest_ids_[h.triangle];
+  kernel::Box3 span;
+  span.extend(a);
+  span.extend(b);
+  thread_local std::vector<std::uint32_t> sectors;
+  const std::array<const double*, 2> ends{a.data(), b.data()};
+  for (std::uint32_t f = 0; f < segment_fans_.size(); ++f) {
+    const SegmentFan& fan = segment_fans_[f];
+    if (!fan.box.overlaps(span)) continue;
+    sectors.clear();
+    protect::detail::sectors_near(complex_, fan.fan, ends, sectors);
+    std::sort(sectors.begin(), sectors.end());
+    sectors.erase(std::unique(sectors.begin(), sectors.end()), sectors.end());
+    for (const std::uint32_t k : sectors) {
+      const std::uint32_t t = fan.fan.sectors[k].triangle;
+      if (fan_owner_[t] != f) continue;
+      const auto& tri = complex_.triangles[t];
+      const kernel::TriangleHit hit = kernel::intersect_segment_triangle(
+          a, b, complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]]);
+      if (hit) hits.push_back({t, hit});
+    }
+  }
+}
+
+void PolygonDomain::collect_hits(const Vec3& a, const Vec3& b, std::vector<kernel::TriangleIntersection>& out) const {
+  out.clear();
+  // The angular search's predicates are exact only within their range; elsewhere the tree.
+  if (segment_fans_.empty() || !kernel::in_exact_range(a) || !kernel::in_exact_range(b))
+    tree_.intersect_segment(a, b, out);
+  else
+    intersect_segment_with_fans(a, b, out);
+}
+
+void PolygonDomain::triangle_hits(const Vec3& a, const Vec3& b, std::vector<kernel::TriangleIntersection>& out) const {
+  collect_hits(a, b, out);
+  std::sort(out.begin(), out.end(), [](const kernel::TriangleIntersection& x, const kernel::TriangleIntersection& y) {
+    return x.triangle < y.triangle;
+  });
 }
 
 void PolygonDomain::intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const {

@@ -20,6 +20,7 @@
 // (io/model_frame.h), as `delpsc mesh` does.
 #pragma once
 
+#include <delpsc/protect/certified_fans.h>
 #include <delpsc/protect/complex.h>
 
 #include "closest_point_index.h"
@@ -29,17 +30,22 @@ namespace delpsc::refine {
 
 class PolygonDomain final : public Domain {
  public:
-  /// Takes the complex (moved in) and builds the tree over its triangles.
+  /// Takes the complex (moved in) and builds the tree over its triangles. With `search_fans`
+  /// (the default), the certified fans of at least ClosestPointIndex::kMinFanDegree triangles
+  /// (protect/certified_fans.h) are taken out of the tree for segment queries and searched by
+  /// angle instead, exactly; false keeps every triangle in the tree (the tests compare both).
   /// Precondition for meshing: no two triangles cross or overlap other than along a shared edge
   /// or vertex (protect::find_self_intersections finds those that do; `delpsc` refuses them).
   /// Along such a crossing the disk condition cannot hold, and a Mesher stops only at
   /// MesherOptions::max_vertices.
-  explicit PolygonDomain(protect::Complex complex);
+  explicit PolygonDomain(protect::Complex complex, bool search_fans = true);
   /// Convenience: builds the complex of `soup` first.
   explicit PolygonDomain(const io::TriangleSoup& soup, const protect::ComplexOptions& options = {});
 
   const protect::Complex& complex() const { return complex_; }
   const kernel::AabbTree& tree() const { return tree_; }
+  /// The fans searched by angle for segment queries (0 without, or with search_fans false).
+  std::size_t segment_fan_count() const { return segment_fans_.size(); }
   /// Closest points on the triangles, fans of thin triangles searched by angle (closest_point_index.h).
   const ClosestPointIndex& closest_point_index() const { return closest_; }
   PolygonDomain(const PolygonDomain&) = delete;
@@ -73,6 +79,11 @@ class PolygonDomain final : public Domain {
   void intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const override;
   void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const override;
   std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const override;
+  /// The triangles the closed segment [a, b] meets, before merging into per-patch hits, in
+  /// increasing triangle order: those of kernel::AabbTree::intersect_segment over all of them,
+  /// with fans searched by angle (the angular search's predicates take only points in their
+  /// exact range, kernel::in_exact_range; other segments go to the whole tree). Clears `out`.
+  void triangle_hits(const Vec3& a, const Vec3& b, std::vector<kernel::TriangleIntersection>& out) const;
   /// First a jittered lattice on each cluster of nearly parallel triangles (triangle_clusters.h,
   /// normals within kClusterAngle of the seed's) of at least spacing² / 2 (surface_lattice.h;
   /// the count returned), then per triangle a number of uniform random points proportional to
@@ -89,10 +100,29 @@ class PolygonDomain final : public Domain {
   void merge_hits(std::vector<kernel::TriangleIntersection>& hits, const Vec3& a, const Vec3& b,
                   std::vector<SurfaceHit>& out) const;
 
+  /// The triangles the segment meets into `out` (cleared), unsorted: the tree's, or with fans
+  /// intersect_segment_with_fans'.
+  void collect_hits(const Vec3& a, const Vec3& b, std::vector<kernel::TriangleIntersection>& out) const;
+  /// Appends to `hits` the triangles the segment meets, as tree_.intersect_segment would:
+  /// rest_tree_'s, and each fan's near the segment's shadow (the fans' own triangles only).
+  void intersect_segment_with_fans(const Vec3& a, const Vec3& b, std::vector<kernel::TriangleIntersection>& hits) const;
+
   protect::Complex complex_;
   kernel::AabbTree tree_;
   ClosestPointIndex closest_;  // over tree_ and complex_'s arrays: the domain is neither copied nor moved
-  std::vector<Vec3> patch_points_;  // centroid of each patch's largest triangle
+  std::vector<Vec3> patch_points_;
+  // Segment queries around fans of thin triangles (every box there holds the fan's centre, and a
+  // dual edge near it visited them all): each fan's own triangles (those of two fans belong to
+  // the first) searched by angle, the others in rest_tree_. Empty without fans.
+  struct SegmentFan {
+    protect::detail::Fan fan;
+    kernel::Box3 box;
+  };
+  std::vector<SegmentFan> segment_fans_;
+  std::vector<std::uint32_t> fan_owner_;  // per triangle: its SegmentFan, or protect::detail::kNoFan
+  std::vector<std::array<std::uint32_t, 3>> rest_triangles_;
+  std::vector<std::uint32_t> rest_ids_;
+  kernel::AabbTree rest_tree_;  // centroid of each patch's largest triangle
 };
 
 }  // namespace delpsc::refine
