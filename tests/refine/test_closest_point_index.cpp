@@ -154,6 +154,18 @@ TEST_CASE("fans of other shapes: cones, pleats, mixed windings, a saddle, open f
     s.triangles.push_back({0, top, 151});
     check_against_tree(s, 1, 12);
   }
+  SUBCASE("a cone on a disc fanned from a rim point: two side triangles wedge a quarter turn there") {
+    Shape s;
+    const int n = 300;
+    std::vector<std::uint32_t> rim;
+    for (int i = 0; i < n; ++i) rim.push_back(s.add(on_circle(i, n, 1, 0)));
+    const std::uint32_t apex = s.add({0, 0, 1});
+    for (int i = 1; i + 1 < n; ++i)
+      s.triangles.push_back({rim[0], rim[static_cast<std::size_t>(i) + 1], rim[static_cast<std::size_t>(i)]});
+    for (int i = 0; i < n; ++i)
+      s.triangles.push_back({apex, rim[static_cast<std::size_t>(i)], rim[static_cast<std::size_t>((i + 1) % n)]});
+    check_against_tree(s, 2, 13);
+  }
   SUBCASE("two fans whose centres share triangles (a strip between them)") {
     Shape s;
     const std::uint32_t a = s.add({0, 0, 0}), b = s.add({3, 0, 0});
