@@ -452,6 +452,33 @@ TEST_CASE("fans around a vertex: pairs across two fans, as brute force finds the
     cases.push_back({side > 0 ? "a fan on a disc edge, rising to one side" : "a fan on a disc edge, rising to the other",
                      soup, true});
   }
+  // A flat disc fanned from a rim point (the first fan: its centre is vertex 0) against fans on
+  // one side of its plane, touching it in their rim edge (a cone over it: none), in one vertex
+  // (an apex inside a disc triangle, on a disc edge) or along an edge across many sectors.
+  const auto corner_disc = [&](io::TriangleSoup& soup) {
+    const std::uint32_t rim = ring(soup, n, Vec3::Zero(), 1, 0);
+    for (int i = 1; i + 1 < n; ++i)
+      soup.triangles.push_back({rim, rim + static_cast<std::uint32_t>(i) + 1, rim + static_cast<std::uint32_t>(i)});
+    return rim;
+  };
+  {
+    io::TriangleSoup soup;
+    const std::uint32_t rim = corner_disc(soup);
+    fan_to(soup, point(soup, Vec3(0, 0, 1)), rim, n, false);
+    cases.push_back({"a cone on a disc fanned from a rim point", soup, false});
+  }
+  for (const Vec3& apex : {Vec3(0.3, 0.2, 0), Vec3(0.5, 0, 0), Vec3(-0.2, -0.1, 0)}) {
+    io::TriangleSoup soup;
+    corner_disc(soup);
+    fan_to(soup, point(soup, apex), ring(soup, 24, Vec3(0, 0, 1), 0.5, 0.5), 24, false);
+    cases.push_back({"a cone standing on its apex on a disc fanned from a rim point", soup, true});
+  }
+  {
+    io::TriangleSoup soup;
+    corner_disc(soup);
+    polygon_fan(soup, Vec3(0, 0.1, 0.4), Vec3(-0.5, 0.3, 0), Vec3(0.6, -0.2, 0), Vec3(0.1, 0.1, 2));
+    cases.push_back({"a fan standing on an edge across a disc fanned from a rim point", soup, true});
+  }
   for (const Case& c : cases) {
     const std::string name = c.name;
     CAPTURE(name);
