@@ -525,7 +525,9 @@ std::optional<ClosestTriangle> AabbTree::closest_point(const Vec3& p, double bel
       }
     }
   }
-  if (!found) return std::nullopt;
+  // Without a bound a non-empty tree always answers, even when every distance overflowed or p
+  // is NaN (the triangle then is 0, the distance infinite): callers over segments rely on it.
+  if (!found && below_squared < std::numeric_limits<double>::infinity()) return std::nullopt;
   return best;
 }
 

@@ -128,8 +128,8 @@ class AabbTree {
 
   /// The closest point of all triangles to p; nullopt iff the tree is empty. Among triangles at
   /// equal distance, one of them. Best-first descent with pruning: O(log n) on typical input.
-  /// With `below_squared`, only a triangle at squared distance below it counts (nullopt when
-  /// there is none): a bound from elsewhere that prunes from the start.
+  /// With a finite `below_squared`, only a triangle at squared distance below it counts
+  /// (nullopt when there is none): a bound from elsewhere that prunes from the start.
   std::optional<ClosestTriangle> closest_point(const Vec3& p,
                                                double below_squared = std::numeric_limits<double>::infinity()) const;
 

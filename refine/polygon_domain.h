@@ -110,7 +110,7 @@ class PolygonDomain final : public Domain {
   protect::Complex complex_;
   kernel::AabbTree tree_;
   ClosestPointIndex closest_;  // over tree_ and complex_'s arrays: the domain is neither copied nor moved
-  std::vector<Vec3> patch_points_;
+  std::vector<Vec3> patch_points_;  // centroid of each patch's largest triangle
   // Segment queries around fans of thin triangles (every box there holds the fan's centre, and a
   // dual edge near it visited them all): each fan's own triangles (those of two fans belong to
   // the first) searched by angle, the others in rest_tree_. Empty without fans.
@@ -122,7 +122,7 @@ class PolygonDomain final : public Domain {
   std::vector<std::uint32_t> fan_owner_;  // per triangle: its SegmentFan, or protect::detail::kNoFan
   std::vector<std::array<std::uint32_t, 3>> rest_triangles_;
   std::vector<std::uint32_t> rest_ids_;
-  kernel::AabbTree rest_tree_;  // centroid of each patch's largest triangle
+  kernel::AabbTree rest_tree_;
 };
 
 }  // namespace delpsc::refine
