@@ -28,18 +28,19 @@ kernel::LargeVector<char> read_pipe(const std::string& path, const PipeWait& wai
   } const closer{fd};
   kernel::LargeVector<char> bytes(std::size_t{1} << 16);
   std::size_t used = 0;
-  auto quiet = std::chrono::milliseconds::zero();  // since the last data
+  // Wall time since the last data: under load a poll's timeout can last longer than asked.
+  using Clock = std::chrono::steady_clock;
+  auto last_data = Clock::now();
   bool noticed = false;
   for (;;) {
     pollfd ready{fd, POLLIN, 0};
     const int polled = ::poll(&ready, 1, static_cast<int>(wait.poll_interval.count()));
     if (polled < 0 && errno != EINTR) throw Error(path + ": waiting for data failed (" + std::strerror(errno) + ")");
     if (polled <= 0) {
-      quiet += wait.poll_interval;
       if (wait.stop && wait.stop())
         throw ReadStopped(path + ": no data came through the pipe" +
                           (used == 0 ? std::string(" (a FIFO without a writer?)") : std::string(" to end it")));
-      if (!noticed && quiet >= wait.notice_after && wait.waiting) {
+      if (!noticed && Clock::now() - last_data >= wait.notice_after && wait.waiting) {
         noticed = true;
         wait.waiting();
       }
@@ -53,7 +54,7 @@ kernel::LargeVector<char> read_pipe(const std::string& path, const PipeWait& wai
       throw Error(path + ": read failed (" + std::strerror(errno) + ")");
     }
     used += static_cast<std::size_t>(n);
-    quiet = std::chrono::milliseconds::zero();
+    last_data = Clock::now();
   }
   bytes.resize(used);
   return bytes;

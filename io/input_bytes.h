@@ -21,14 +21,15 @@ struct PipeWait {
   /// Polled about every `poll_interval` while no data comes; true ends the read with ReadStopped.
   /// Empty: wait as long as it takes (as `cat` does), the writer may come later.
   std::function<bool()> stop;
-  /// Called once, when `notice_after` has passed without data (a user's shell looks hung
-  /// otherwise: the command tells them it waits, and on what).
+  /// Called once, at the first poll after `notice_after` of wall time without data (a user's
+  /// shell looks hung otherwise: the command tells them it waits, and on what).
   std::function<void()> waiting;
   std::chrono::milliseconds poll_interval{100};
   std::chrono::milliseconds notice_after{1000};
 };
 
-/// Thrown by read_model when PipeWait::stop ended a wait for data; what() names the file.
+/// Thrown by read_input_bytes (so by read_model and read_point_set) when PipeWait::stop ended a
+/// wait for data; what() names the file.
 class ReadStopped : public Error {
  public:
   using Error::Error;

@@ -109,7 +109,7 @@ grep -qF "waiting for data on $TMP/lonely.off" "$TMP/err" || fail "FIFO without 
 expect 1 "no data came through the pipe" -- mesh "$TMP/lonely.off" --size 20% -o "$TMP/lonely.mesh" --max-seconds 0.5
 [[ ! -e "$TMP/lonely.mesh" ]] || fail "FIFO without writer: mesh wrote $TMP/lonely.mesh"
 expect 1 "while reading; nothing written" -- protect "$TMP/lonely.off" --size 20% --max-seconds 0.5
-(sleep 1.5; cat "$TMP/cube.off" >"$TMP/lonely.off") &
+(sleep 3; cat "$TMP/cube.off" >"$TMP/lonely.off") &
 expect 0 "waiting for data on $TMP/lonely.off" -- info "$TMP/lonely.off" --max-seconds 30
 wait
 [[ "$(value triangles)" == "12" ]] || fail "FIFO with a late writer: triangles=$(value triangles)"

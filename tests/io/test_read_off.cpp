@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -337,18 +338,25 @@ TEST_CASE("OFF: a FIFO without a writer stops when asked; a late writer is read"
   CHECK(message.find(fifo) != std::string::npos);
   CHECK(message.find("no data came through the pipe") != std::string::npos);
 
-  // The writer opens after the notice (it blocks in open until the reader is there).
+  // The writer opens once the notice has come (it blocks in open until the reader is there), so
+  // the read has waited before any data: no timing assumed.
   polls = notices = 0;
-  wait.stop = [&] { return ++polls > 1000; };
+  std::atomic<bool> noticed{false};
+  wait.stop = [&] { return ++polls > 100000; };  // a guard: ~17 minutes of polls
+  wait.waiting = [&] {
+    ++notices;
+    noticed = true;
+  };
   std::thread writer([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    while (!noticed) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     test::write_file(fifo, kCube);
   });
   const auto late = io::read_model(fifo, wait);
   writer.join();
   std::remove(fifo.c_str());
   CHECK(notices == 1);
-  CHECK(polls >= 3);
+  CHECK(polls >= 1);
+  CHECK(polls <= 100000);
   CHECK(late.soup.triangles.size() == 12);
   CHECK(late.soup.vertices.size() == 8);
 }
