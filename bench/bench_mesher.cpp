@@ -5,7 +5,8 @@
 // at 2% (pipeline/), where the costs per input triangle weigh; the output's orientation
 // (orient/); the input checks `delpsc mesh` runs before meshing (input_checks/: the tree,
 // crossing triangles, near contacts; also on a cylinder with fanned caps), which the pipeline
-// leaves out; and the G1 check it runs after (skeleton_check/). Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
+// leaves out; the G1 check it runs after (skeleton_check/) and the distances to the input
+// (distances/, on a cylinder with fanned caps). Generated models and, when fetched by scripts/get-cgal-data.sh, the libcgal-demo
 // models.
 //   cmake --build build --target bench_mesher && build/bin/bench_mesher
 #include <benchmark/benchmark.h>
@@ -23,6 +24,7 @@
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/protect.h>
 #include <delpsc/protect/self_intersections.h>
+#include <delpsc/refine/approximation_error.h>
 #include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/mesher.h>
 #include <delpsc/refine/polygon_domain.h>
@@ -44,6 +46,33 @@ struct Model {
   double lambda = 0;
 };
 
+// Its domain, and Protect's balls at λ = 0.5% of the diagonal.
+Model model_of(const std::string& name, const std::function<io::TriangleSoup()>& make) {
+  Model m{name, make, std::make_shared<const refine::PolygonDomain>(make()), nullptr, 0};
+  m.lambda = 0.005 * m.domain->bounding_box().diagonal();
+  m.balls = std::make_shared<const protect::BallSet>(protect::protect(m.domain->complex(), m.lambda));
+  return m;
+}
+
+// A closed cylinder (radius 1, height 1) of n rim points whose caps are fans of n triangles
+// around their centres (tests/app/lib.sh's write_fan_cylinder), as CAD exports tessellate them.
+io::TriangleSoup fan_cylinder(std::uint32_t n) {
+  io::TriangleSoup soup;
+  for (const double z : {0.0, 1.0})
+    for (std::uint32_t i = 0; i < n; ++i)
+      soup.vertices.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), z);
+  soup.vertices.emplace_back(0, 0, 0);
+  soup.vertices.emplace_back(0, 0, 1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    soup.triangles.push_back({i, j, n + j});
+    soup.triangles.push_back({i, n + j, n + i});
+    soup.triangles.push_back({2 * n, j, i});
+    soup.triangles.push_back({2 * n + 1, n + i, n + j});
+  }
+  return soup;
+}
+
 std::vector<Model> models() {
   std::vector<std::pair<std::string, std::function<io::TriangleSoup()>>> makers = {
       {"sphere", [] { return io::make_sphere(16); }},
@@ -56,12 +85,7 @@ std::vector<Model> models() {
       makers.emplace_back(std::string("cgal_") + name, [path] { return io::read_model(path.string()).soup; });
   }
   std::vector<Model> out;
-  for (auto& [name, make] : makers) {
-    Model m{name, make, std::make_shared<const refine::PolygonDomain>(make()), nullptr, 0};
-    m.lambda = 0.005 * m.domain->bounding_box().diagonal();
-    m.balls = std::make_shared<const protect::BallSet>(protect::protect(m.domain->complex(), m.lambda));
-    out.push_back(std::move(m));
-  }
+  for (auto& [name, make] : makers) out.push_back(model_of(name, make));
   return out;
 }
 
@@ -195,21 +219,17 @@ void input_checks_of(benchmark::State& state, const io::TriangleSoup& soup) {
 // (tests/app/lib.sh's write_fan_cylinder): rim²/2 box-overlapping pairs in each cap, which a
 // certified flat fan spares (protect/self_intersections.h).
 void input_checks_fan_cylinder(benchmark::State& state) {
-  const auto n = static_cast<std::uint32_t>(state.range(0));
-  io::TriangleSoup soup;
-  for (const double z : {0.0, 1.0})
-    for (std::uint32_t i = 0; i < n; ++i)
-      soup.vertices.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), z);
-  soup.vertices.emplace_back(0, 0, 0);
-  soup.vertices.emplace_back(0, 0, 1);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t j = (i + 1) % n;
-    soup.triangles.push_back({i, j, n + j});
-    soup.triangles.push_back({i, n + j, n + i});
-    soup.triangles.push_back({2 * n, j, i});
-    soup.triangles.push_back({2 * n + 1, n + i, n + j});
-  }
-  input_checks_of(state, soup);
+  input_checks_of(state, fan_cylinder(static_cast<std::uint32_t>(state.range(0))));
+}
+
+// The distances `delpsc mesh` reports (measure_approximation, sample spacing λ/2 as the command
+// uses), on the mesh at 0.5% made before the timing; wall time, since it runs on two threads.
+void distances(benchmark::State& state, const Model& m) {
+  const io::SurfaceMesh mesh = mesh_of(m);
+  refine::ApproximationOptions options;
+  options.sample_spacing = m.lambda / 2;
+  for (auto _ : state) benchmark::DoNotOptimize(refine::measure_approximation(mesh, *m.domain, options));
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
 }
 
 // input_checks on the side of a cone of `rim` triangles around its apex, open (second argument
@@ -240,6 +260,14 @@ const int registered = [] {
       ->Args({5000, 1})
       ->Args({20000, 1})
       ->Unit(benchmark::kMillisecond);
+  // Fans of thin triangles: refinement's segment queries, the G1 check's closest points and the
+  // distances all search them by angle (refine/closest_point_index.h, PolygonDomain).
+  for (const std::uint32_t n : {5000u, 20000u}) {
+    const Model m = model_of("fan_cylinder_" + std::to_string(n), [n] { return fan_cylinder(n); });
+    benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("skeleton_check/" + m.name).c_str(), skeleton_check, m)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("distances/" + m.name).c_str(), distances, m)->UseRealTime()->Unit(benchmark::kMillisecond);
+  }
   for (const Model& m : models()) {
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/sample").c_str(), mesh, m, true)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("mesh/" + m.name + "/paper").c_str(), mesh, m, false)->Unit(benchmark::kMillisecond);
