@@ -113,7 +113,11 @@ class PolygonDomain final : public Domain {
   std::vector<Vec3> patch_points_;  // centroid of each patch's largest triangle
   // Segment queries around fans of thin triangles (every box there holds the fan's centre, and a
   // dual edge near it visited them all): each fan's own triangles (those of two fans belong to
-  // the first) searched by angle, the others in rest_tree_. Empty without fans.
+  // the first) searched by angle, the others in rest_tree_. Empty without fans. With fans there
+  // are three trees: tree_ (rays, segments outside the predicates' range, callers), this one,
+  // and closest_'s own over the triangles of its fans, which differ: an exact segment search
+  // needs fans certified disjoint (protect/certified_fans.h), a closest-point bound any axis
+  // (a corner's fan with its two side triangles is one there and not here).
   struct SegmentFan {
     protect::detail::Fan fan;
     kernel::Box3 box;
