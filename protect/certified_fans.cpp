@@ -87,6 +87,58 @@ bool sort_about(const Complex& complex, Fan& fan, const Vec3& axis_point, double
   return true;
 }
 
+// The star of a vertex on the rim of a polygon that a CAD exporter fanned from that vertex (an
+// STL cylinder's cap, a cone's base) is no fan: the few triangles of the side that meet the
+// vertex cover the same angles as the cap's. Its triangles within 20 degrees of parallel to a
+// reference triangle are tried alone (the reference: of the largest triangle and four spread
+// over the star, the one most others are parallel to), then those within 1 degree (a shallow
+// cone's side against its base). The others stay out of the fan, and every pair they make is
+// tested as for any other triangle (the proof at certify_fans holds for any set of a vertex's
+// triangles). `fan.sectors` holds the whole star on entry, the certified part if this answers
+// true. O(d log d) exact tests.
+bool certify_part(const Complex& complex, Fan& fan, std::size_t min_degree, double length) {
+  const Vec3& centre = complex.vertices[fan.centre];
+  const auto normal = [&](const Fan::Sector& s) {
+    return Vec3((complex.vertices[s.start] - centre).cross(complex.vertices[s.end] - centre));
+  };
+  const std::vector<Fan::Sector> star = fan.sectors;
+  constexpr double kRoughly = 0.94;  // cos 20 degrees
+  const auto parallel = [&](const Vec3& n, const Vec3& axis, double cosine) {
+    return std::abs(n.dot(axis)) >= cosine * n.norm();
+  };
+  std::array<Vec3, 5> tried;
+  tried.fill(Vec3::Zero());  // (Eigen leaves a default-constructed vector uninitialised)
+  for (const Fan::Sector& s : star)
+    if (const Vec3 n = normal(s); n.squaredNorm() > tried[0].squaredNorm()) tried[0] = n;
+  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = normal(star[(k - 1) * star.size() / (tried.size() - 1)]);
+  Vec3 axis = Vec3::Zero();
+  std::size_t most = 0;
+  for (Vec3& candidate : tried) {
+    candidate.normalize();
+    if (!candidate.allFinite()) continue;
+    const auto count = static_cast<std::size_t>(
+        std::count_if(star.begin(), star.end(), [&](const Fan::Sector& s) { return parallel(normal(s), candidate, kRoughly); }));
+    if (count > most) most = count, axis = candidate;
+  }
+  if (most < min_degree) return false;
+  for (const double cosine : {kRoughly, 0.9998}) {  // 20 and 1 degrees
+    fan.sectors.clear();
+    Vec3 sum = Vec3::Zero();
+    for (const Fan::Sector& s : star) {
+      const Vec3 n = normal(s);
+      if (!parallel(n, axis, cosine)) continue;
+      fan.sectors.push_back(s);
+      sum += n.dot(axis) < 0 ? Vec3(-n) : n;
+    }
+    const double size = sum.norm();
+    if (fan.sectors.size() < min_degree || fan.sectors.size() == star.size() || !(size > 0) || !std::isfinite(size))
+      continue;
+    if (sort_about(complex, fan, centre + (length / size) * sum, length)) return true;
+  }
+  fan.sectors = star;
+  return false;
+}
+
 }  // namespace
 
 // Why disjoint sectors prove a fan. The axis is the line through the centre v and a point w (any
@@ -149,7 +201,8 @@ std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, st
       const double size = normal.norm();
       return size > 0 && std::isfinite(size) && sort_about(complex, fan, centre + (length / size) * normal, length);
     };
-    if (disjoint_around(as_given) || disjoint_around(agreeing)) {
+    if (disjoint_around(as_given) || disjoint_around(agreeing) ||
+        certify_part(complex, fan, min_degree, length)) {
       fan_at[v] = static_cast<std::uint32_t>(fans.size());
       fans.push_back(std::move(fan));
       fan = Fan{};
@@ -158,10 +211,31 @@ std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, st
   return fans;
 }
 
-std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through) {
+std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through,
+                             std::vector<std::uint32_t>* left_out) {
   Fan turned = fan;
   const double length = (complex.vertices[fan.sectors[0].start] - complex.vertices[fan.centre]).norm();
-  if (!sort_about(complex, turned, through, length)) return std::nullopt;
+  if (left_out != nullptr) {
+    // A triangle whose plane holds the new axis has no sector about it: the side triangles at a
+    // cap's rim vertex when the axis is turned through the other cap's (certified_fans.h).
+    left_out->clear();
+    if (!kernel::in_exact_range(through)) return std::nullopt;
+    const double* c = complex.vertices[fan.centre].data();
+    std::erase_if(turned.sectors, [&](const Fan::Sector& s) {
+      if (kernel::orient3d(c, through.data(), complex.vertices[s.start].data(), complex.vertices[s.end].data()) != 0)
+        return false;
+      left_out->push_back(s.triangle);
+      return true;
+    });
+    if (left_out->size() > kMostLeftOut || turned.sectors.empty()) {
+      left_out->clear();
+      return std::nullopt;
+    }
+  }
+  if (!sort_about(complex, turned, through, length)) {
+    if (left_out != nullptr) left_out->clear();
+    return std::nullopt;
+  }
   return turned;
 }
 

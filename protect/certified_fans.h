@@ -41,16 +41,24 @@ struct Fan {
 };
 
 /// The fans of `complex`: every vertex of at least `min_degree` triangles whose sectors are
-/// proven disjoint about one of two axes (see the .cpp). O(d log d) exact tests per such vertex
-/// of degree d. `fan_at[v]` is v's index in the result, or kNoFan.
+/// proven disjoint about one of two axes (see the .cpp), or, failing that, whose triangles
+/// roughly parallel to most of them are (a cap fanned from a rim vertex: the side's few
+/// triangles at that vertex are then left out of `sectors`, which hold a fan's triangles, at
+/// least `min_degree` of them; a triangle is in the fans that hold it, not in every fan of its
+/// corners). O(d log d) exact tests per such vertex of degree d. `fan_at[v]` is v's index in
+/// the result, or kNoFan.
 inline constexpr std::uint32_t kNoFan = 0xffffffffu;
 std::vector<Fan> certify_fans(const Complex& complex, std::size_t min_degree, std::vector<std::uint32_t>& fan_at);
 
 /// `fan` seen about the axis through its centre and `through` (any other point), if its sectors
 /// are disjoint about that axis too: a search from another fan whose centre lies on it then
 /// finds few sectors for that fan's triangles (sectors_near), where an axis merely close to that
-/// centre leaves the triangles' shadows around the axis, each reaching many. O(d log d).
-std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through);
+/// centre leaves the triangles' shadows around the axis, each reaching many. With `left_out`,
+/// the triangles whose planes hold the new axis (at most kMostLeftOut) are taken out of the
+/// result's sectors into it, for the caller to test one by one. O(d log d).
+inline constexpr std::size_t kMostLeftOut = 8;
+std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through,
+                             std::vector<std::uint32_t>* left_out = nullptr);
 
 /// Appends to `out` the indices into fan.sectors of every sector whose closed shadow along the
 /// axis may meet triangle `triangle`'s (and a few more; duplicates possible), or all of them

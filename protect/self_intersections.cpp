@@ -139,12 +139,23 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   std::vector<std::uint32_t> fan_at;  // per vertex: its fan's index, or kNoFan
   const std::vector<detail::Fan> fans =
       max_pairs > 0 ? detail::certify_fans(complex, kFanDegree, fan_at) : std::vector<detail::Fan>{};
-  // Two triangles sharing exactly one vertex, a certified fan's centre: they meet only there.
-  const auto only_fan_centre = [&](const std::array<std::uint32_t, 3>& ia, const std::array<std::uint32_t, 3>& ib) {
-    std::uint32_t shared = 0, count = 0;
-    for (const std::uint32_t x : ia)
-      if (x == ib[0] || x == ib[1] || x == ib[2]) shared = x, ++count;
-    return count == 1 && fan_at[shared] != detail::kNoFan;
+  // Which of each triangle's corners are centres of fans it belongs to (bit k for corner k): a
+  // fan may hold only part of its centre's star (certified_fans.h).
+  std::vector<std::uint8_t> member_at(fans.empty() ? 0 : complex.triangles.size(), 0);
+  for (const detail::Fan& fan : fans)
+    for (const detail::Fan::Sector& s : fan.sectors) {
+      const auto& tri = complex.triangles[s.triangle];
+      member_at[s.triangle] |= static_cast<std::uint8_t>(tri[0] == fan.centre ? 1 : tri[1] == fan.centre ? 2 : 4);
+    }
+  // Two triangles sharing exactly one vertex, the centre of a certified fan holding both: they
+  // meet only there.
+  const auto only_fan_centre = [&](std::uint32_t a, std::uint32_t b) {
+    const auto &ia = complex.triangles[a], &ib = complex.triangles[b];
+    int shared_a = -1, shared_b = -1, count = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (ia[i] == ib[j]) shared_a = i, shared_b = j, ++count;
+    return count == 1 && (member_at[a] >> shared_a & 1) != 0 && (member_at[b] >> shared_b & 1) != 0;
   };
   // Each vertex is tested from one of its triangles only, its first: a triangle t near vertex v
   // pairs with every triangle of v (each box holds v), so with that one too, and no (v, t) is
@@ -172,7 +183,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     if (d2 > 0 && d2 < tolerance2) closest = candidate;
   };
   // A certified fan's own pairs meet only at its centre or along an edge they share: none is
-  // tested. Each triangle joins the fan of its smallest certified corner (fan_of, a fan's index),
+  // tested. Each triangle joins the first certified fan holding it (fan_of, a fan's index),
   // and the descent below leaves out every pair of two triangles of fans, whole subtrees at a
   // time (one group for them all): a fan of d triangles has d²/2 pairs, all boxes overlapping -
   // 4e8 on a cylinder whose caps were fanned from 20,000 rim points, 5 s - and a cone's side and
@@ -183,10 +194,11 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   if (!fans.empty()) {
     fan_of.assign(complex.triangles.size(), kNoFan);
     in_a_fan.assign(complex.triangles.size(), kernel::AabbTree::kNoGroup);
-    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
-      for (const std::uint32_t v : complex.triangles[t]) fan_of[t] = std::min(fan_of[t], fan_at[v]);
-      if (fan_of[t] != kNoFan) in_a_fan[t] = 0;
-    }
+    for (std::uint32_t f = static_cast<std::uint32_t>(fans.size()); f-- > 0;)
+      for (const detail::Fan::Sector& s : fans[f].sectors) {
+        fan_of[s.triangle] = f;
+        in_a_fan[s.triangle] = 0;
+      }
   }
   struct Stopped {};  // thrown out of the descent when `stop` says so
   // Near contacts between triangles of fans, which the descent no longer pairs: each vertex whose
@@ -228,15 +240,24 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   // Pairs across two fans: each triangle y of a later fan whose box meets the box of fan A's own
   // triangles, against those of A's sectors its shadow along A's axis reaches (sectors_near: no
   // other triangle of A can meet y), the axis turned through the later fan's centre where A's
-  // sectors allow it (fan_about). A cone's side against its base fanned from the centre: a few
-  // sectors per base triangle instead of every side triangle.
+  // sectors allow it (fan_about; the few triangles it leaves out are tested against every y). A
+  // cone's side against its base fanned from the centre: a few sectors per base triangle instead
+  // of every side triangle; two caps fanned from rim vertices one above the other: the turned
+  // axis runs through both, and leaves out the side triangles at the lower one.
   std::size_t tested = 0;
+  const auto across_pair = [&](std::uint32_t x, std::uint32_t y, const std::array<Vec3, 3>& cy) {
+    if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
+    const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
+    if (!asked(pair) || only_fan_centre(x, y)) return;
+    const std::array<Vec3, 3> cx = corners(x);
+    settle_crossing(pair, x < y ? cx : cy, x < y ? cy : cx);
+  };
   const auto across_fans = [&] {
     std::vector<kernel::Box3> fan_box(fans.size());
     for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
       if (fan_of[t] != kNoFan)
         for (const std::uint32_t v : complex.triangles[t]) fan_box[fan_of[t]].extend(complex.vertices[v]);
-    std::vector<std::uint32_t> near_box, reached;
+    std::vector<std::uint32_t> near_box, reached, left_out;
     for (std::uint32_t f = 0; f < fans.size(); ++f) {
       if (fan_box[f].empty()) continue;  // every triangle of its star is an earlier fan's
       near_box.clear();
@@ -251,7 +272,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
         const std::uint32_t y = near_box[i];
         if (i == 0 || fan_of[y] != fan_of[near_box[i - 1]]) {
           if (stop && stop()) throw Stopped{};  // O(d log d) each
-          turned = detail::fan_about(complex, fans[f], complex.vertices[fans[fan_of[y]].centre]);
+          turned = detail::fan_about(complex, fans[f], complex.vertices[fans[fan_of[y]].centre], &left_out);
         }
         const detail::Fan& a = turned ? *turned : fans[f];
         reached.clear();
@@ -259,15 +280,11 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
         std::sort(reached.begin(), reached.end());
         reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
         const std::array<Vec3, 3> cy = corners(y);
-        for (const std::uint32_t k : reached) {
-          if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
-          const std::uint32_t x = a.sectors[k].triangle;
-          if (fan_of[x] != f) continue;  // an earlier fan's: paired from there
-          const std::array<std::uint32_t, 2> pair{std::min(x, y), std::max(x, y)};
-          if (!asked(pair) || only_fan_centre(complex.triangles[x], complex.triangles[y])) continue;
-          const std::array<Vec3, 3> cx = corners(x);
-          settle_crossing(pair, x < y ? cx : cy, x < y ? cy : cx);
-        }
+        for (const std::uint32_t k : reached)
+          if (const std::uint32_t x = a.sectors[k].triangle; fan_of[x] == f) across_pair(x, y, cy);
+        // (an earlier fan's x is paired from there)
+        for (const std::uint32_t x : left_out)
+          if (fan_of[x] == f) across_pair(x, y, cy);
       }
     }
   };

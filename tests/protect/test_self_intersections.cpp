@@ -20,6 +20,7 @@
 #include <delpsc/io/shapes.h>
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/constructions.h>
+#include <delpsc/kernel/predicates.h>
 #include <delpsc/protect/certified_fans.h>
 #include <delpsc/protect/self_intersections.h>
 
@@ -79,6 +80,27 @@ std::vector<std::array<std::uint32_t, 2>> brute_crossings(const protect::Complex
       if (triangles_intersect_improperly(corners(s), complex.triangles[s], corners(t), complex.triangles[t]))
         pairs.push_back({s, t});
   return pairs;
+}
+
+// A closed cylinder of radius 1 and height 1, n points on each rim (the lower rim's first is
+// vertex 0, the upper's vertex n, above it), whose caps are fanned from those two points, as an
+// STL exporter triangulates a polygon.
+io::TriangleSoup rim_fanned_cylinder(int n) {
+  io::TriangleSoup soup;
+  for (const double height : {0.0, 1.0})
+    for (int i = 0; i < n; ++i)
+      soup.vertices.push_back(Vec3(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), height));
+  const auto high = static_cast<std::uint32_t>(n);
+  for (std::uint32_t i = 0; i < high; ++i) {
+    const std::uint32_t j = (i + 1) % high;
+    soup.triangles.push_back({i, j, high + j});
+    soup.triangles.push_back({i, high + j, high + i});
+  }
+  for (std::uint32_t i = 1; i + 1 < high; ++i) {
+    soup.triangles.push_back({0, i + 1, i});
+    soup.triangles.push_back({high, high + i, high + i + 1});
+  }
+  return soup;
 }
 
 std::size_t self_intersections(const io::TriangleSoup& soup) {
@@ -301,11 +323,14 @@ TEST_CASE("fans around a vertex: a certified fan's pairs are not visited") {
     double height;
     std::function<Vec3(int)> rim;
     bool turned, base;  // base: closed by a disc fanned from the rim's centre
+    bool base_from_rim = false;  // ... from the rim's first point instead (an STL export's)
   };
   for (const Case& c : {Case{"a flat disc", 0, on_circle, false, false}, Case{"a disc turned every other", 0, on_circle, true, false},
                         Case{"a square disc turned every other", 0, on_square, true, false},
                         Case{"a shallow cone", 1, on_circle, false, false}, Case{"a steep cone", -3, on_circle, false, false},
-                        Case{"a cone on a base fanned from its centre", 1, on_circle, false, true}}) {
+                        Case{"a cone on a base fanned from its centre", 1, on_circle, false, true},
+                        Case{"a cone on a base fanned from a rim point", 1, on_circle, false, true, true},
+                        Case{"a shallow cone on a base fanned from a rim point", 0.05, on_circle, false, true, true}}) {
     const std::string name = c.name;
     CAPTURE(name);
     io::TriangleSoup soup;
@@ -315,7 +340,12 @@ TEST_CASE("fans around a vertex: a certified fan's pairs are not visited") {
       const auto a = static_cast<std::uint32_t>(1 + i), b = static_cast<std::uint32_t>(1 + (i + 1) % n);
       soup.triangles.push_back(c.turned && i % 2 ? std::array<std::uint32_t, 3>{0, b, a} : std::array<std::uint32_t, 3>{0, a, b});
     }
-    if (c.base) {
+    if (c.base && c.base_from_rim) {
+      // The corner's star is no fan (its two side triangles cover the chords' angles); its
+      // chords alone are (certified_fans.h), else their n²/2 coplanar pairs are all visited.
+      for (int i = 1; i + 1 < n; ++i)
+        soup.triangles.push_back({1, static_cast<std::uint32_t>(2 + i), static_cast<std::uint32_t>(1 + i)});
+    } else if (c.base) {
       soup.vertices.push_back(Vec3::Zero());
       for (int i = 0; i < n; ++i)
         soup.triangles.push_back({static_cast<std::uint32_t>(n + 1), static_cast<std::uint32_t>(1 + (i + 1) % n),
@@ -479,6 +509,53 @@ TEST_CASE("fans around a vertex: pairs across two fans, as brute force finds the
     polygon_fan(soup, Vec3(0, 0.1, 0.4), Vec3(-0.5, 0.3, 0), Vec3(0.6, -0.2, 0), Vec3(0.1, 0.1, 2));
     cases.push_back({"a fan standing on an edge across a disc fanned from a rim point", soup, true});
   }
+  // A closed cylinder whose caps are fanned from rim points one above the other (an STL
+  // export's): about the axis turned through the upper corner, the side triangles at the lower
+  // one have no sector and are tested one by one (fan_about's left_out). Then the same with a
+  // triangle at the lower corner rising through the upper cap (sharing only the upper corner
+  // with the cap's triangles, which it crosses): left out of the turned fan, and a member of
+  // neither certified part.
+  for (const bool rising : {false, true}) {
+    io::TriangleSoup soup = rim_fanned_cylinder(n);
+    if (rising) soup.triangles.push_back({0, static_cast<std::uint32_t>(n), point(soup, Vec3(0.2, 0.1, 1.3))});
+    cases.push_back({rising ? "caps fanned from rim points, a triangle at the lower corner rising through the upper cap"
+                            : "a cylinder whose caps are fanned from rim points one above the other",
+                     soup, rising});
+  }
+  {
+    // A fin at the lower corner whose edge runs up through the upper corner and on: it meets
+    // every triangle there. It is a member of the lower corner's fan and left out of it about
+    // the axis turned through the upper corner.
+    io::TriangleSoup soup = rim_fanned_cylinder(n);
+    soup.triangles.push_back({0, point(soup, Vec3(1, 0, 2)), point(soup, Vec3(1.5, 0.2, 0.5))});
+    cases.push_back({"caps fanned from rim points, a fin at the lower corner through the upper one", soup, true});
+  }
+  {
+    // A cone whose apex is on the vertical through the lower corner, above the cylinder, and
+    // whose side cuts the side triangles at that corner: about the axis turned through the apex
+    // they are left out, and only testing them one by one finds those crossings.
+    io::TriangleSoup soup = rim_fanned_cylinder(n);
+    fan_to(soup, point(soup, Vec3(1, 0, 2)), ring(soup, 24, Vec3(1, 0.07, 0.5), 0.3, 0.5), 24, false);
+    cases.push_back({"caps fanned from rim points, a cone from above the lower corner through its side", soup, true});
+  }
+  {
+    // A cone standing on the upper cap, its rim through the upper corner: its two triangles at
+    // that corner cross the cap's chords there, sharing only the corner with them, and are no
+    // members of the corner's certified part (the chords) but of the apex's fan.
+    io::TriangleSoup soup = rim_fanned_cylinder(n);
+    const std::uint32_t apex = point(soup, Vec3(0.6, 0, 1.6));
+    std::vector<std::uint32_t> rim{static_cast<std::uint32_t>(n)};  // the upper corner, (1, 0, 1)
+    for (int k = 1; k < 24; ++k)
+      rim.push_back(point(soup, Vec3(0.6 + 0.4 * std::cos(2 * M_PI * k / 24), 0.4 * std::sin(2 * M_PI * k / 24), 1)));
+    for (std::size_t k = 0; k < rim.size(); ++k) soup.triangles.push_back({apex, rim[k], rim[(k + 1) % rim.size()]});
+    cases.push_back({"caps fanned from rim points, a cone standing on the upper cap through its corner", soup, true});
+  }
+  {
+    io::TriangleSoup soup;
+    corner_disc(soup);
+    fan_to(soup, point(soup, Vec3(0.2, 0.1, -0.5)), ring(soup, 24, Vec3(0, 0, 0.5), 0.5, 0.5), 24, false);
+    cases.push_back({"a cone through a disc fanned from a rim point", soup, true});
+  }
   for (const Case& c : cases) {
     const std::string name = c.name;
     CAPTURE(name);
@@ -518,6 +595,57 @@ TEST_CASE("fans around a vertex: axis points outside the predicates' exact range
   CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0, 0x1p141)).has_value() == false);
   CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0, 0, std::numeric_limits<double>::quiet_NaN())).has_value() == false);
   CHECK(protect::detail::fan_about(complex, fans[0], Vec3(0x1p-140, 0, 0x1p140)).has_value());
+}
+
+// A cap fanned from a rim point: its corner's star is no fan when the side's triangles there
+// cover the chords' angles (a cone's base), and the chords alone are certified; about an axis
+// turned through the other cap's corner (a cylinder's), the triangles whose planes hold it are
+// left out of the turned fan and handed back, and the rest is that fan.
+TEST_CASE("fans around a vertex: a cap fanned from a rim point, certified in part and turned") {
+  const int n = 40;
+  {
+    io::TriangleSoup soup = rim_fanned_cylinder(n);  // its lower rim and cap, and a cone over them
+    soup.vertices.resize(n);
+    soup.vertices.push_back(Vec3(0, 0, 1));
+    soup.triangles.clear();
+    for (int i = 0; i < n; ++i)
+      soup.triangles.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>((i + 1) % n), static_cast<std::uint32_t>(n)});
+    for (std::uint32_t i = 1; i + 1 < static_cast<std::uint32_t>(n); ++i) soup.triangles.push_back({0, i + 1, i});
+    const protect::Complex complex = protect::build_complex(soup);
+    std::vector<std::uint32_t> fan_at;
+    const std::vector<protect::detail::Fan> fans = protect::detail::certify_fans(complex, 16, fan_at);
+    REQUIRE(fan_at[0] != protect::detail::kNoFan);
+    const protect::detail::Fan& corner = fans[fan_at[0]];
+    CHECK(corner.sectors.size() == static_cast<std::size_t>(n - 2));
+    for (const auto& sector : corner.sectors) CHECK(sector.triangle >= static_cast<std::uint32_t>(n));  // chords only
+    CHECK(fan_at[n] != protect::detail::kNoFan);  // the apex: its whole star
+    CHECK(fans[fan_at[n]].sectors.size() == static_cast<std::size_t>(n));
+  }
+  const protect::Complex complex = protect::build_complex(rim_fanned_cylinder(n));
+  std::vector<std::uint32_t> fan_at;
+  const std::vector<protect::detail::Fan> fans = protect::detail::certify_fans(complex, 16, fan_at);
+  REQUIRE(fan_at[0] != protect::detail::kNoFan);
+  const protect::detail::Fan& lower = fans[fan_at[0]];
+  const Vec3& above = complex.vertices[n];
+  std::vector<std::uint32_t> left_out{12345};  // cleared first
+  const std::optional<protect::detail::Fan> turned = protect::detail::fan_about(complex, lower, above, &left_out);
+  REQUIRE(turned.has_value());
+  std::vector<std::uint32_t> before, after(left_out);
+  for (const auto& sector : lower.sectors) before.push_back(sector.triangle);
+  for (const auto& sector : turned->sectors) after.push_back(sector.triangle);
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  CHECK(after == before);
+  for (const std::uint32_t t : left_out) {
+    const auto& tri = complex.triangles[t];
+    CHECK(kernel::orient3d(complex.vertices[0], above, complex.vertices[tri[0] == 0 ? tri[1] : tri[0]],
+                           complex.vertices[tri[2] == 0 ? tri[1] : tri[2]]) == 0);
+  }
+  CHECK(left_out.size() <= protect::detail::kMostLeftOut);
+  if (!left_out.empty()) CHECK_FALSE(protect::detail::fan_about(complex, lower, above).has_value());
+  // No turned fan (a point outside the predicates' range): nothing is handed back either.
+  CHECK_FALSE(protect::detail::fan_about(complex, lower, Vec3(1, 0, 1e300), &left_out).has_value());
+  CHECK(left_out.empty());
 }
 
 // A certified fan's own pairs are left out of the descent (d²/2 of them): its near contacts are

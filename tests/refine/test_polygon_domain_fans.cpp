@@ -49,6 +49,19 @@ io::TriangleSoup fanned_cylinder(int n, double height, double lift) {
   return s.soup;
 }
 
+// A cone of n rim points (radius 1, apex at height 1) on a base fanned from its first rim
+// point, as an STL exporter triangulates a polygon: that point's star is no fan, its chords are
+// (certified_fans.h), and the side's two triangles there stay in the tree.
+io::TriangleSoup cone_on_rim_fanned_base(int n) {
+  Soup s;
+  std::vector<std::uint32_t> rim;
+  for (int i = 0; i < n; ++i) rim.push_back(s.add({std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n), 0}));
+  const std::uint32_t apex = s.add({0, 0, 1});
+  for (std::size_t i = 0; i < rim.size(); ++i) s.soup.triangles.push_back({rim[i], rim[(i + 1) % rim.size()], apex});
+  for (std::size_t i = 1; i + 1 < rim.size(); ++i) s.soup.triangles.push_back({rim[0], rim[i + 1], rim[i]});
+  return s.soup;
+}
+
 bool same_hits(const std::vector<kernel::TriangleIntersection>& x, const std::vector<kernel::TriangleIntersection>& y) {
   if (x.size() != y.size()) return false;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -104,6 +117,7 @@ TEST_CASE("segment queries with fans searched by angle find the tree's hits exac
   SUBCASE("a cylinder with both caps fanned") { check_segments(fanned_cylinder(300, 1, 0), 2, {0, 1}, 1); }
   SUBCASE("a cone on a fanned base") { check_segments(fanned_cylinder(300, 0, 1), 2, {0, 0.5, 1}, 2); }
   SUBCASE("a shallow cone on a cylinder") { check_segments(fanned_cylinder(256, 0.5, 0.05), 2, {0, 0.5, 0.55}, 3); }
+  SUBCASE("a cone on a base fanned from a rim point") { check_segments(cone_on_rim_fanned_base(300), 2, {0, 0.5}, 4); }
 }
 
 // Two half cones whose apexes share a triangle: it is in both fans' sectors, and must be
