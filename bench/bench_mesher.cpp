@@ -55,8 +55,9 @@ Model model_of(const std::string& name, const std::function<io::TriangleSoup()>&
 }
 
 // A closed cylinder (radius 1, height 1) of n rim points whose caps are fans of n triangles
-// around their centres (tests/app/lib.sh's write_fan_cylinder), as CAD exports tessellate them.
-io::TriangleSoup fan_cylinder(std::uint32_t n) {
+// around their centres (tests/app/lib.sh's write_fan_cylinder), as CAD exports tessellate them,
+// or, `from_rim`, of n - 2 triangles from the rims' first points (as STL exporters do).
+io::TriangleSoup fan_cylinder(std::uint32_t n, bool from_rim = false) {
   io::TriangleSoup soup;
   for (const double z : {0.0, 1.0})
     for (std::uint32_t i = 0; i < n; ++i)
@@ -67,8 +68,13 @@ io::TriangleSoup fan_cylinder(std::uint32_t n) {
     const std::uint32_t j = (i + 1) % n;
     soup.triangles.push_back({i, j, n + j});
     soup.triangles.push_back({i, n + j, n + i});
-    soup.triangles.push_back({2 * n, j, i});
-    soup.triangles.push_back({2 * n + 1, n + i, n + j});
+    if (!from_rim) {
+      soup.triangles.push_back({2 * n, j, i});
+      soup.triangles.push_back({2 * n + 1, n + i, n + j});
+    } else if (i >= 1 && i + 1 < n) {
+      soup.triangles.push_back({0, i + 1, i});
+      soup.triangles.push_back({n, n + i, n + i + 1});
+    }
   }
   return soup;
 }
@@ -222,6 +228,13 @@ void input_checks_fan_cylinder(benchmark::State& state) {
   input_checks_of(state, fan_cylinder(static_cast<std::uint32_t>(state.range(0))));
 }
 
+// The same with the caps fanned from rim points one above the other: the chords' boxes are long
+// and overlap many side triangles' (what is left of the quadratic cost there), and the search
+// across the two fans turns the lower one's axis through the upper corner.
+void input_checks_rim_fan_cylinder(benchmark::State& state) {
+  input_checks_of(state, fan_cylinder(static_cast<std::uint32_t>(state.range(0)), true));
+}
+
 // The distances `delpsc mesh` reports (measure_approximation, sample spacing λ/2 as the command
 // uses), on the mesh at 0.5% made before the timing; wall time, since it runs on two threads.
 void distances(benchmark::State& state, const Model& m) {
@@ -233,9 +246,10 @@ void distances(benchmark::State& state, const Model& m) {
 }
 
 // input_checks on the side of a cone of `rim` triangles around its apex, open (second argument
-// 0) or on a base fanned from its centre (1): rim²/2 box-overlapping pairs in the side, which a
-// fan certified along the cone's axis spares, and rim² across side and base, which the search
-// by angle across fans spares.
+// 0) or on a base fanned from its centre (1) or from its first rim point (2): rim²/2
+// box-overlapping pairs in the side, which a fan certified along the cone's axis spares, and
+// rim² across side and base, which the search by angle across fans spares; the base fanned from
+// a rim point is a fan of its chords without the side's two triangles there.
 void input_checks_cone(benchmark::State& state) {
   const auto n = static_cast<std::uint32_t>(state.range(0));
   io::TriangleSoup soup;
@@ -244,7 +258,8 @@ void input_checks_cone(benchmark::State& state) {
   soup.vertices.emplace_back(0, 0, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
     soup.triangles.push_back({n, i, (i + 1) % n});
-    if (state.range(1) != 0) soup.triangles.push_back({n + 1, (i + 1) % n, i});
+    if (state.range(1) == 1) soup.triangles.push_back({n + 1, (i + 1) % n, i});
+    if (state.range(1) == 2 && i + 2 < n) soup.triangles.push_back({0, i + 2, i + 1});
   }
   input_checks_of(state, soup);
 }
@@ -259,6 +274,12 @@ const int registered = [] {
       ->Args({20000, 0})
       ->Args({5000, 1})
       ->Args({20000, 1})
+      ->Args({5000, 2})
+      ->Args({20000, 2})
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("input_checks/rim_fan_cylinder", input_checks_rim_fan_cylinder)
+      ->Arg(5000)
+      ->Arg(20000)
       ->Unit(benchmark::kMillisecond);
   // Fans of thin triangles: refinement's segment queries, the G1 check's closest points and the
   // distances all search them by angle (refine/closest_point_index.h, PolygonDomain).
