@@ -573,10 +573,12 @@ void AabbTree::for_each_overlapping_pair(const std::function<void(std::uint32_t,
     node_group[i] = g;
   }
   const auto one_group = [&](std::uint32_t i, std::uint32_t j) {
-    return grouped && node_group[i] < kMixed && node_group[i] == node_group[j];
+    return grouped && ((node_group[i] < kMixed && node_group[i] == node_group[j]) || node_group[i] == kLeaveOut ||
+                       node_group[j] == kLeaveOut);
   };
   const auto report = [&](std::uint32_t a, std::uint32_t b) {
-    if (!grouped || group[a] == kNoGroup || group[a] != group[b]) f(a, b);
+    if (!grouped || ((group[a] == kNoGroup || group[a] != group[b]) && group[a] != kLeaveOut && group[b] != kLeaveOut))
+      f(a, b);
   };
   // A negative or NaN margin would shrink or void every box and drop pairs that overlap.
   if (!(margin > 0)) margin = 0;

@@ -148,8 +148,11 @@ class AabbTree {
   /// `group`, if not empty (one entry per triangle id), leaves out every pair of triangles of the
   /// same group (any value but kNoGroup), whole subtrees at a time: a caller that has settled a
   /// group's own pairs otherwise (a fan of d triangles around a vertex, flat or a cone's side:
-  /// d²/2 pairs whose boxes all overlap) does not pay for enumerating them.
+  /// d²/2 pairs whose boxes all overlap) does not pay for enumerating them. A triangle of group
+  /// kLeaveOut is paired with none (its caller searches all its pairs otherwise); other groups
+  /// are below it.
   static constexpr std::uint32_t kNoGroup = 0xffffffffu;
+  static constexpr std::uint32_t kLeaveOut = kNoGroup - 2;
   void for_each_overlapping_pair(const std::function<void(std::uint32_t, std::uint32_t)>& f, double margin = 0,
                                  std::span<const std::uint32_t> group = {}) const;
 

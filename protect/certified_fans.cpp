@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <delpsc/kernel/predicates.h>
@@ -305,6 +306,29 @@ void sectors_near(const Complex& complex, const Fan& fan, std::span<const double
       else if (o < 0) wedge(off[j], off[i]);
       else wedge(off[i], off[i]), wedge(off[j], off[j]);  // one direction (opposite ones met the axis above)
     }
+}
+
+void sectors_within(const Complex& complex, const Fan& fan, const Vec3& p, double distance,
+                    std::vector<std::uint32_t>& out) {
+  const auto all = [&] {
+    for (std::uint32_t k = 0; k < fan.sectors.size(); ++k) out.push_back(k);
+  };
+  const Vec3& c = complex.vertices[fan.centre];
+  const Vec3 axis = (fan.axis_point - c).normalized();
+  const Vec3 from_axis = (p - c) - axis.dot(p - c) * axis;
+  const double rho = from_axis.norm();
+  // The wedge's sides are p turned by +-half about the axis, each rounded by a few units in the
+  // last place of the largest coordinate: that much more angle is added.
+  const double largest = std::max({p.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff(), 1e-300});
+  const double reach = 2 * distance + 16 * std::numeric_limits<double>::epsilon() * largest;
+  if (!(rho > 4 * reach) || !axis.allFinite()) return all();  // near the axis: every direction
+  const double half = std::asin(reach / rho);
+  const Vec3 on_axis = p - from_axis, across = axis.cross(from_axis);
+  const Vec3 below = on_axis + std::cos(half) * from_axis - std::sin(half) * across;
+  const Vec3 above = on_axis + std::cos(half) * from_axis + std::sin(half) * across;
+  if (!kernel::in_exact_range(below) || !kernel::in_exact_range(above)) return all();
+  const std::array<const double*, 2> sides{below.data(), above.data()};
+  sectors_near(complex, fan, sides, out);
 }
 
 }  // namespace delpsc::protect::detail

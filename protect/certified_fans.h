@@ -74,4 +74,13 @@ void sectors_near(const Complex& complex, const Fan& fan, const std::array<std::
 void sectors_near(const Complex& complex, const Fan& fan, std::span<const double* const> points,
                   std::vector<std::uint32_t>& out);
 
+/// Appends to `out` the indices into fan.sectors of every sector whose triangle may come within
+/// `distance` of point `p` (and a few more; duplicates possible), or all of them when p lies
+/// within a few times `distance` of the axis: the sectors meeting the wedge that a disc of that
+/// radius around p's shadow spans, seen from the axis (projection along the axis shortens no
+/// distance), widened for the rounding of the wedge's constructed sides. For near contacts, which
+/// the caller decides by distance: not exact, but conservative. O(log d + k) for k listed.
+void sectors_within(const Complex& complex, const Fan& fan, const Vec3& p, double distance,
+                    std::vector<std::uint32_t>& out);
+
 }  // namespace delpsc::protect::detail

@@ -201,14 +201,88 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       }
   }
   struct Stopped {};  // thrown out of the descent when `stop` says so
-  // Near contacts between triangles of fans, which the descent no longer pairs: each vertex whose
-  // owner is in a fan against the fans' triangles near it (a box query: the triangles whose box
-  // meets the vertex's, grown by twice the tolerance for rounding; near_vertex decides).
+  // Each fan's box: of the triangles it is the first fan of.
+  std::vector<kernel::Box3> fan_box(fans.size());
+  for (std::uint32_t t = 0; t < fan_of.size(); ++t)
+    if (fan_of[t] != kNoFan)
+      for (const std::uint32_t v : complex.triangles[t]) fan_box[fan_of[t]].extend(complex.vertices[v]);
+  const auto box_of = [&](std::uint32_t t) {
+    kernel::Box3 box;
+    for (const std::uint32_t v : complex.triangles[t]) box.extend(complex.vertices[v]);
+    return box;
+  };
+  // Fans searched whole, their triangles left out of the descent altogether: those whose own
+  // triangles' boxes meet many more triangles of no fan (the descent's pairs for them) than the
+  // fan's box holds (the whole search's). The chords of a cap fanned from a rim point are long,
+  // and each box holds much of the rim's side triangles (d²/4 pairs on a cylinder, each tested
+  // exactly: 5 s at 20,000 rim points). Their pairs with triangles of no fan are searched by
+  // angle then (whole_fans), and their near contacts by angle (near_within_fans) or by vertex
+  // (near_owned_by_whole).
+  std::vector<char> whole(fans.size(), 0);
+  {
+    std::vector<std::uint32_t> own, near_box;
+    std::vector<kernel::Box3> near_boxes;
+    for (std::uint32_t f = 0; f < fans.size(); ++f) {
+      own.clear();
+      for (const detail::Fan::Sector& s : fans[f].sectors)
+        if (fan_of[s.triangle] == f) own.push_back(s.triangle);
+      if (own.empty()) continue;
+      near_box.clear();
+      tree.triangles_in_box(fan_box[f], near_box);
+      near_boxes.clear();
+      for (const std::uint32_t y : near_box)
+        if (fan_of[y] == kNoFan) near_boxes.push_back(box_of(y));
+      // The descent's pairs, estimated from own triangles spread over the fan.
+      constexpr std::size_t kSamples = 8;
+      std::size_t met = 0;
+      for (std::size_t i = 0; i < kSamples; ++i) {
+        const kernel::Box3 box = box_of(own[i * own.size() / kSamples]);
+        met += static_cast<std::size_t>(
+            std::count_if(near_boxes.begin(), near_boxes.end(), [&](const kernel::Box3& b) { return b.overlaps(box); }));
+      }
+      whole[f] = met * own.size() > 8 * kSamples * std::max<std::size_t>(near_boxes.size(), 1);
+      if (whole[f])
+        for (const std::uint32_t t : own) in_a_fan[t] = kernel::AabbTree::kLeaveOut;
+    }
+  }
+  // Near contacts between triangles of fans, which the descent no longer pairs: for each fan,
+  // the vertices near its box whose owner is in a fan (any owner, for a fan searched whole),
+  // against its triangles in the sectors within the tolerance of the vertex (sectors_within;
+  // near_vertex decides). A box query per vertex instead met every chord of a cap fanned from a
+  // rim point whose box holds the vertex: most of the rim, d²/8 closest points.
   const auto near_within_fans = [&] {
+    std::vector<std::uint32_t> near_box, reached;
+    std::vector<std::uint32_t> seen(owner.size(), kNoFan);  // the last fan that looked at a vertex
+    std::size_t looked = 0;
+    for (std::uint32_t f = 0; f < fans.size(); ++f) {
+      if (fan_box[f].empty()) continue;
+      kernel::Box3 grown = fan_box[f];
+      grown.lo -= Vec3::Constant(2 * tolerance);
+      grown.hi += Vec3::Constant(2 * tolerance);
+      near_box.clear();
+      tree.triangles_in_box(grown, near_box);
+      for (const std::uint32_t t : near_box)
+        for (const std::uint32_t v : complex.triangles[t]) {
+          if (seen[v] == f) continue;
+          seen[v] = f;
+          if (owner[v] == kNone || (fan_of[owner[v]] == kNoFan && !whole[f])) continue;
+          if (stop && (++looked & 0xfffu) == 0 && stop()) throw Stopped{};
+          const Vec3& p = complex.vertices[v];
+          reached.clear();
+          detail::sectors_within(complex, fans[f], p, tolerance, reached);
+          for (const std::uint32_t k : reached)
+            if (const std::uint32_t x = fans[f].sectors[k].triangle; fan_of[x] == f)
+              near_vertex(v, p, x, corners(x), complex.triangles[x]);
+        }
+    }
+  };
+  // The vertices owned by a triangle of a fan searched whole against the triangles of no fan
+  // near them (those of fans: near_within_fans).
+  const auto near_owned_by_whole = [&] {
     std::vector<std::uint32_t> hits;
     for (std::uint32_t v = 0; v < owner.size(); ++v) {
+      if (owner[v] == kNone || fan_of[owner[v]] == kNoFan || !whole[fan_of[owner[v]]]) continue;
       if (stop && (v & 0xfffu) == 0xfffu && stop()) throw Stopped{};
-      if (owner[v] == kNone || fan_of[owner[v]] == kNoFan) continue;
       const Vec3& p = complex.vertices[v];
       kernel::Box3 box;
       box.extend(p - Vec3::Constant(2 * tolerance));
@@ -216,7 +290,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       hits.clear();
       tree.triangles_in_box(box, hits);
       for (const std::uint32_t t : hits)
-        if (fan_of[t] != kNoFan) near_vertex(v, p, t, corners(t), complex.triangles[t]);
+        if (fan_of[t] == kNoFan) near_vertex(v, p, t, corners(t), complex.triangles[t]);
     }
   };
   // Whether pair (first < second) is asked whether it crosses: not when max_pairs smaller ones
@@ -253,10 +327,6 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     settle_crossing(pair, x < y ? cx : cy, x < y ? cy : cx);
   };
   const auto across_fans = [&] {
-    std::vector<kernel::Box3> fan_box(fans.size());
-    for (std::uint32_t t = 0; t < complex.triangles.size(); ++t)
-      if (fan_of[t] != kNoFan)
-        for (const std::uint32_t v : complex.triangles[t]) fan_box[fan_of[t]].extend(complex.vertices[v]);
     std::vector<std::uint32_t> near_box, reached, left_out;
     for (std::uint32_t f = 0; f < fans.size(); ++f) {
       if (fan_box[f].empty()) continue;  // every triangle of its star is an earlier fan's
@@ -288,6 +358,29 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       }
     }
   };
+  // A fan searched whole against the triangles of no fan near its box: each against the fan's own
+  // triangles in the sectors its shadow reaches whose boxes meet its own (the descent's pairs).
+  const auto whole_fans = [&] {
+    std::vector<std::uint32_t> near_box, reached;
+    for (std::uint32_t f = 0; f < fans.size(); ++f) {
+      if (!whole[f]) continue;
+      near_box.clear();
+      tree.triangles_in_box(fan_box[f], near_box);
+      for (const std::uint32_t y : near_box) {
+        if (fan_of[y] != kNoFan) continue;  // across_fans
+        if (stop && (++tested & 0xfffu) == 0 && stop()) throw Stopped{};
+        reached.clear();
+        detail::sectors_near(complex, fans[f], complex.triangles[y], reached);
+        std::sort(reached.begin(), reached.end());
+        reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+        const kernel::Box3 box_y = box_of(y);
+        const std::array<Vec3, 3> cy = corners(y);
+        for (const std::uint32_t k : reached)
+          if (const std::uint32_t x = fans[f].sectors[k].triangle; fan_of[x] == f && box_of(x).overlaps(box_y))
+            across_pair(x, y, cy);
+      }
+    }
+  };
   // Every box-overlapping pair once, from the tree against itself (a box query per triangle cost
   // twice as much), the boxes grown by the tolerance so that a vertex near a triangle pairs one
   // of its own triangles with that one (it lies in its own triangles' boxes). One descent for
@@ -296,7 +389,9 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   std::size_t visited = 0;
   try {
   if (near && !fan_of.empty()) near_within_fans();
+  if (near && !fan_of.empty()) near_owned_by_whole();
   if (max_pairs > 0 && !fan_of.empty()) across_fans();
+  if (max_pairs > 0 && !fan_of.empty()) whole_fans();
   tree.for_each_overlapping_pair(
       [&](std::uint32_t x, std::uint32_t y) {
         if (stop && (++visited & 0xfffu) == 0 && stop()) throw Stopped{};

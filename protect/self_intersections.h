@@ -64,12 +64,14 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 /// `near_contact` find_near_contact(complex, tree, tolerance). max_pairs 0 skips the first,
 /// a tolerance that is not positive the second. Cost as find_self_intersections, the pairs
 /// found with boxes grown by the tolerance.
-/// The near contacts between triangles of certified fans are found by a box query per vertex of
-/// the fans instead. `stop` (optional) is asked every 4,096 box-overlapping pairs (and 4,096
-/// vertices of fans, 4,096 sectors searched across fans, and before each fan is turned towards
-/// another); when it answers true the search ends there with `stopped` set and what it found so
-/// far (a cone of 20,000 rim points on a base triangulated in one strip of thin triangles makes
-/// 10^8 pairs, seconds; on a base fanned from one rim corner, tens of seconds).
+/// The near contacts between triangles of certified fans are found per fan instead, by angle
+/// about its axis for each vertex near it; a fan whose own triangles' boxes meet many more
+/// triangles than its box holds (a cap fanned from a rim point: long chords) is searched whole,
+/// by angle, against the triangles of no fan. `stop` (optional) is asked every 4,096
+/// box-overlapping pairs (and 4,096 vertices near fans, 4,096 triangles and sectors searched
+/// across fans, and before each fan is turned towards another); when it answers true the search
+/// ends there with `stopped` set and what it found so far (a cone of 20,000 rim points on a base
+/// triangulated in one strip of thin triangles makes 10^8 pairs, seconds).
 struct InputDefects {
   std::vector<std::array<std::uint32_t, 2>> crossing;
   std::optional<std::array<std::uint32_t, 2>> near_contact;

@@ -454,7 +454,8 @@ TEST_CASE("box query equals brute force on bounding boxes") {
 
 TEST_CASE("overlapping pairs equal brute force, each pair once") {
   // margin: each box grown by it (the brute force grows them the same way, in double). group:
-  // pairs within one group (not kNoGroup) left out, on both sides.
+  // pairs within one group (not kNoGroup) left out, on both sides, and every pair of a triangle
+  // of kLeaveOut.
   const auto check = [](const Soup& s, double margin = 0, std::span<const std::uint32_t> group = {}) {
     const AabbTree tree(s.vertices, s.triangles);
     std::vector<std::array<std::uint32_t, 2>> got;
@@ -477,7 +478,9 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
     std::vector<std::array<std::uint32_t, 2>> want;
     for (std::uint32_t a = 0; a < boxes.size(); ++a)
       for (std::uint32_t b = a + 1; b < boxes.size(); ++b)
-        if (boxes[a].overlaps(boxes[b]) && (group.empty() || group[a] == AabbTree::kNoGroup || group[a] != group[b]))
+        if (boxes[a].overlaps(boxes[b]) &&
+            (group.empty() || ((group[a] == AabbTree::kNoGroup || group[a] != group[b]) &&
+                               group[a] != AabbTree::kLeaveOut && group[b] != AabbTree::kLeaveOut)))
           want.push_back({a, b});
     CHECK(got == want);
     return want.size();
@@ -506,6 +509,18 @@ TEST_CASE("overlapping pairs equal brute force, each pair once") {
   CHECK(check(dense, 0, by_region) < all);
   CHECK(check(dense, 0, scattered) < all);
   CHECK(check(dense, 0, single) == 0);
+  // Left out: a region (whole subtrees), scattered triangles among groups, all of them.
+  std::vector<std::uint32_t> region_out(by_region), scattered_out(scattered),
+      all_out(dense.triangles.size(), AabbTree::kLeaveOut);
+  for (std::uint32_t t = 0; t < dense.triangles.size(); ++t) {
+    if (region_out[t] == 1) region_out[t] = AabbTree::kLeaveOut;
+    if (t % 7 == 0) scattered_out[t] = AabbTree::kLeaveOut;
+  }
+  const std::size_t without_region = check(dense, 0, region_out);
+  CHECK(without_region > 0);
+  CHECK(without_region < check(dense, 0, by_region));
+  CHECK(check(dense, 0, scattered_out) < check(dense, 0, scattered));
+  CHECK(check(dense, 0, all_out) == 0);
   CHECK_THROWS_AS(AabbTree(dense.vertices, dense.triangles).for_each_overlapping_pair(
                       [](std::uint32_t, std::uint32_t) {}, 0, std::span<const std::uint32_t>(single).first(10)),
                   std::invalid_argument);

@@ -84,22 +84,26 @@ std::vector<std::array<std::uint32_t, 2>> brute_crossings(const protect::Complex
 
 // A closed cylinder of radius 1 and height 1, n points on each rim (the lower rim's first is
 // vertex 0, the upper's vertex n, above it), whose caps are fanned from those two points, as an
-// STL exporter triangulates a polygon.
-io::TriangleSoup rim_fanned_cylinder(int n) {
+// STL exporter triangulates a polygon; the side's triangles first, or the caps'.
+io::TriangleSoup rim_fanned_cylinder(int n, bool caps_first = false) {
   io::TriangleSoup soup;
   for (const double height : {0.0, 1.0})
     for (int i = 0; i < n; ++i)
       soup.vertices.push_back(Vec3(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), height));
   const auto high = static_cast<std::uint32_t>(n);
-  for (std::uint32_t i = 0; i < high; ++i) {
-    const std::uint32_t j = (i + 1) % high;
-    soup.triangles.push_back({i, j, high + j});
-    soup.triangles.push_back({i, high + j, high + i});
-  }
+  const auto side = [&] {
+    for (std::uint32_t i = 0; i < high; ++i) {
+      const std::uint32_t j = (i + 1) % high;
+      soup.triangles.push_back({i, j, high + j});
+      soup.triangles.push_back({i, high + j, high + i});
+    }
+  };
+  if (!caps_first) side();
   for (std::uint32_t i = 1; i + 1 < high; ++i) {
     soup.triangles.push_back({0, i + 1, i});
     soup.triangles.push_back({high, high + i, high + i + 1});
   }
+  if (caps_first) side();
   return soup;
 }
 
@@ -539,6 +543,18 @@ TEST_CASE("fans around a vertex: pairs across two fans, as brute force finds the
     cases.push_back({"caps fanned from rim points, a cone from above the lower corner through its side", soup, true});
   }
   {
+    // The caps' triangles first, so that they own the rims' vertices (each vertex's near contacts
+    // are sought from its first triangle), and a small triangle of no fan outside the side, 5e-6
+    // from a rim point: a near contact only the chord owning that point can report. (At 160 rim
+    // points the chords' boxes hold enough of the side for the caps to be searched whole.)
+    io::TriangleSoup soup = rim_fanned_cylinder(160, true);
+    const Vec3 rim = soup.vertices[5], out = Vec3(rim.x(), rim.y(), 0).normalized(), along(-rim.y(), rim.x(), 0);
+    const Vec3 at = rim + 5e-6 * out;
+    soup.triangles.push_back({point(soup, at - 0.01 * along - 0.01 * z), point(soup, at + 0.01 * along - 0.01 * z),
+                              point(soup, at + 0.01 * z)});
+    cases.push_back({"caps fanned from rim points listed first, a triangle hovering beside a rim point", soup, false});
+  }
+  {
     // A cone standing on the upper cap, its rim through the upper corner: its two triangles at
     // that corner cross the cap's chords there, sharing only the corner with them, and are no
     // members of the corner's certified part (the chords) but of the apex's fan.
@@ -646,6 +662,19 @@ TEST_CASE("fans around a vertex: a cap fanned from a rim point, certified in par
   // No turned fan (a point outside the predicates' range): nothing is handed back either.
   CHECK_FALSE(protect::detail::fan_about(complex, lower, Vec3(1, 0, 1e300), &left_out).has_value());
   CHECK(left_out.empty());
+  // At 3,000 rim points the chords' long boxes hold much of the side: the caps are searched
+  // whole by angle, where the descent made ~n²/4 pairs of a chord and a side triangle (the stop
+  // is asked every 4,096 of them: ~550 times).
+  for (const bool caps_first : {false, true}) {
+    CAPTURE(caps_first);
+    const protect::Complex big = protect::build_complex(rim_fanned_cylinder(3000, caps_first));
+    const kernel::AabbTree tree(big.vertices, big.triangles);
+    int polls = 0;
+    const protect::InputDefects found = protect::find_input_defects(big, tree, 100, 1e-9, [&] { return ++polls < 0; });
+    CHECK(found.crossing.empty());
+    CHECK_FALSE(found.near_contact);
+    CHECK(polls <= 40);  // 22 and 23 when written
+  }
 }
 
 // A certified fan's own pairs are left out of the descent (d²/2 of them): its near contacts are
