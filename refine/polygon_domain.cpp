@@ -32,6 +32,32 @@ struct CoplanarSpan {
   Vec3 p0, p1;
 };
 
+// The plane of the fan's largest triangle (three corners) when all its triangles but at most
+// protect::detail::kMostLeftOut lie in it (exact), those few then taken out of the fan's
+// sectors, which stay disjoint (a cap fanned from a rim point, certified with the side's
+// triangles there); else none, and the fan as it was.
+std::optional<std::array<Vec3, 3>> flat_part(const protect::Complex& complex, protect::detail::Fan& fan) {
+  const auto corners = [&](const protect::detail::Fan::Sector& s) {
+    const auto& t = complex.triangles[s.triangle];
+    return std::array<Vec3, 3>{complex.vertices[t[0]], complex.vertices[t[1]], complex.vertices[t[2]]};
+  };
+  const auto area = [&](const protect::detail::Fan::Sector& s) {
+    const auto c = corners(s);
+    return (c[1] - c[0]).cross(c[2] - c[0]).squaredNorm();
+  };
+  const std::array<Vec3, 3> plane =
+      corners(*std::max_element(fan.sectors.begin(), fan.sectors.end(),
+                                [&](const auto& x, const auto& y) { return area(x) < area(y); }));
+  const auto in_plane = [&](const protect::detail::Fan::Sector& s) {
+    return kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.start]) == 0 &&
+           kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.end]) == 0;
+  };
+  const auto off = static_cast<std::size_t>(std::count_if(fan.sectors.begin(), fan.sectors.end(), [&](const auto& s) { return !in_plane(s); }));
+  if (off > protect::detail::kMostLeftOut || off == fan.sectors.size()) return std::nullopt;
+  std::erase_if(fan.sectors, [&](const auto& s) { return !in_plane(s); });
+  return plane;
+}
+
 }  // namespace
 
 PolygonDomain::PolygonDomain(protect::Complex complex, bool search_fans)
@@ -46,6 +72,7 @@ PolygonDomain::PolygonDomain(protect::Complex complex, bool search_fans)
       fan_owner_.assign(complex_.triangles.size(), protect::detail::kNoFan);
       for (protect::detail::Fan& fan : fans) {
         SegmentFan& f = segment_fans_.emplace_back();
+        f.plane = flat_part(complex_, fan);
         for (const auto& sector : fan.sectors) {
           std::uint32_t& owner = fan_owner_[sector.triangle];
           if (owner == protect::detail::kNoFan) owner = static_cast<std::uint32_t>(segment_fans_.size() - 1);
@@ -172,6 +199,11 @@ void PolygonDomain::intersect_segment_with_fans(const Vec3& a, const Vec3& b,
   for (std::uint32_t f = 0; f < segment_fans_.size(); ++f) {
     const SegmentFan& fan = segment_fans_[f];
     if (!fan.box.overlaps(span)) continue;
+    if (fan.plane) {  // a flat cap: most dual edges near it do not cross its plane (exact)
+      const auto& [p, q, r] = *fan.plane;
+      const int side_a = kernel::orient3d(p, q, r, a);
+      if (side_a != 0 && side_a == kernel::orient3d(p, q, r, b)) continue;
+    }
     sectors.clear();
     protect::detail::sectors_near(complex_, fan.fan, ends, sectors);
     std::sort(sectors.begin(), sectors.end());

@@ -20,6 +20,10 @@
 // (io/model_frame.h), as `delpsc mesh` does.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <vector>
+
 #include <delpsc/protect/certified_fans.h>
 #include <delpsc/protect/complex.h>
 
@@ -121,6 +125,9 @@ class PolygonDomain final : public Domain {
   struct SegmentFan {
     protect::detail::Fan fan;
     kernel::Box3 box;
+    /// Three corners spanning the plane holding all the fan's own triangles (a flat cap), or
+    /// none: a segment with both ends strictly on one side of it meets none of them.
+    std::optional<std::array<Vec3, 3>> plane;
   };
   std::vector<SegmentFan> segment_fans_;
   std::vector<std::uint32_t> fan_owner_;  // per triangle: its SegmentFan, or protect::detail::kNoFan

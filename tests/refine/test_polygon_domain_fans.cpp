@@ -29,8 +29,10 @@ struct Soup {
 };
 
 // A closed cylinder of n rim points (radius 1, height `height`), each cap fanned from its
-// centre, the top cap's centre lifted by `lift` (a cone when nonzero).
-io::TriangleSoup fanned_cylinder(int n, double height, double lift) {
+// centre, the top cap's centre lifted by `lift` (a cone when nonzero); or, `from_rim`, each cap
+// fanned from its rim's first point (an STL export's: that point's fan is certified with the
+// side's triangles there, which the segment search takes out to search the cap as a plane).
+io::TriangleSoup fanned_cylinder(int n, double height, double lift, bool from_rim = false) {
   Soup s;
   std::vector<std::uint32_t> low, high;
   for (int i = 0; i < n; ++i) {
@@ -38,11 +40,13 @@ io::TriangleSoup fanned_cylinder(int n, double height, double lift) {
     low.push_back(s.add({std::cos(t), std::sin(t), 0}));
     high.push_back(s.add({std::cos(t), std::sin(t), height}));
   }
-  const std::uint32_t bottom = s.add({0, 0, 0}), top = s.add({0, 0, height + lift});
+  const std::uint32_t bottom = from_rim ? low[0] : s.add({0, 0, 0});
+  const std::uint32_t top = from_rim ? high[0] : s.add({0, 0, height + lift});
   for (int i = 0; i < n; ++i) {
     const auto j = static_cast<std::size_t>((i + 1) % n), k = static_cast<std::size_t>(i);
     s.soup.triangles.push_back({low[k], low[j], high[j]});
     s.soup.triangles.push_back({low[k], high[j], high[k]});
+    if (from_rim && (k == 0 || j == 0)) continue;
     s.soup.triangles.push_back({bottom, low[j], low[k]});
     s.soup.triangles.push_back({top, high[k], high[j]});
   }
@@ -118,6 +122,9 @@ TEST_CASE("segment queries with fans searched by angle find the tree's hits exac
   SUBCASE("a cone on a fanned base") { check_segments(fanned_cylinder(300, 0, 1), 2, {0, 0.5, 1}, 2); }
   SUBCASE("a shallow cone on a cylinder") { check_segments(fanned_cylinder(256, 0.5, 0.05), 2, {0, 0.5, 0.55}, 3); }
   SUBCASE("a cone on a base fanned from a rim point") { check_segments(cone_on_rim_fanned_base(300), 2, {0, 0.5}, 4); }
+  SUBCASE("a cylinder with both caps fanned from rim points") {
+    check_segments(fanned_cylinder(300, 1, 0, true), 2, {0, 1}, 5);
+  }
 }
 
 // Two half cones whose apexes share a triangle: it is in both fans' sectors, and must be
