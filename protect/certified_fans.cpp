@@ -93,10 +93,10 @@ bool sort_about(const Complex& complex, Fan& fan, const Vec3& axis_point, double
 // vertex cover the same angles as the cap's. Its triangles within 20 degrees of parallel to a
 // reference triangle are tried alone (the reference: of the largest triangle and four spread
 // over the star, the one most others are parallel to), then those within 1 degree (a shallow
-// cone's side against its base). The others stay out of the fan, and every pair they make is
-// tested as for any other triangle (the proof at certify_fans holds for any set of a vertex's
-// triangles). `fan.sectors` holds the whole star on entry, the certified part if this answers
-// true. O(d log d) exact tests.
+// cone's side against its base), then those in its plane (a shallower one). The others stay
+// out of the fan, and every pair they make is tested as for any other triangle (the proof at
+// certify_fans holds for any set of a vertex's triangles). `fan.sectors` holds the whole star
+// on entry, the certified part if this answers true. O(d log d) exact tests.
 bool certify_part(const Complex& complex, Fan& fan, std::size_t min_degree, double length) {
   const Vec3& centre = complex.vertices[fan.centre];
   const auto normal = [&](const Fan::Sector& s) {
@@ -107,27 +107,34 @@ bool certify_part(const Complex& complex, Fan& fan, std::size_t min_degree, doub
   const auto parallel = [&](const Vec3& n, const Vec3& axis, double cosine) {
     return std::abs(n.dot(axis)) >= cosine * n.norm();
   };
-  std::array<Vec3, 5> tried;
-  tried.fill(Vec3::Zero());  // (Eigen leaves a default-constructed vector uninitialised)
-  for (const Fan::Sector& s : star)
-    if (const Vec3 n = normal(s); n.squaredNorm() > tried[0].squaredNorm()) tried[0] = n;
-  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = normal(star[(k - 1) * star.size() / (tried.size() - 1)]);
-  Vec3 axis = Vec3::Zero();
-  std::size_t most = 0;
-  for (Vec3& candidate : tried) {
-    candidate.normalize();
-    if (!candidate.allFinite()) continue;
+  std::array<std::size_t, 5> tried{};  // the reference's candidates, indices into star
+  for (std::size_t i = 0; i < star.size(); ++i)
+    if (normal(star[i]).squaredNorm() > normal(star[tried[0]]).squaredNorm()) tried[0] = i;
+  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = (k - 1) * star.size() / (tried.size() - 1);
+  std::size_t reference = 0, most = 0;
+  for (const std::size_t candidate : tried) {
+    const Vec3 axis = normal(star[candidate]).normalized();
+    if (!axis.allFinite()) continue;
     const auto count = static_cast<std::size_t>(
-        std::count_if(star.begin(), star.end(), [&](const Fan::Sector& s) { return parallel(normal(s), candidate, kRoughly); }));
-    if (count > most) most = count, axis = candidate;
+        std::count_if(star.begin(), star.end(), [&](const Fan::Sector& s) { return parallel(normal(s), axis, kRoughly); }));
+    if (count > most) most = count, reference = candidate;
   }
   if (most < min_degree) return false;
-  for (const double cosine : {kRoughly, 0.9998}) {  // 20 and 1 degrees
+  const Vec3 axis = normal(star[reference]).normalized();
+  const double* plane[3] = {centre.data(), complex.vertices[star[reference].start].data(),
+                            complex.vertices[star[reference].end].data()};
+  const auto in_plane = [&](const Fan::Sector& s) {
+    return kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.start].data()) == 0 &&
+           kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.end].data()) == 0;
+  };
+  // 20 and 1 degrees, then exactly in the reference's plane (a base under a cone shallower
+  // than that).
+  for (const double cosine : {kRoughly, 0.9998, 1.0}) {
     fan.sectors.clear();
     Vec3 sum = Vec3::Zero();
     for (const Fan::Sector& s : star) {
       const Vec3 n = normal(s);
-      if (!parallel(n, axis, cosine)) continue;
+      if (cosine < 1 ? !parallel(n, axis, cosine) : !in_plane(s)) continue;
       fan.sectors.push_back(s);
       sum += n.dot(axis) < 0 ? Vec3(-n) : n;
     }

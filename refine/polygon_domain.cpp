@@ -32,10 +32,10 @@ struct CoplanarSpan {
   Vec3 p0, p1;
 };
 
-// The plane of the fan's largest triangle (three corners) when all its triangles but at most
-// protect::detail::kMostLeftOut lie in it (exact), those few then taken out of the fan's
-// sectors, which stay disjoint (a cap fanned from a rim point, certified with the side's
-// triangles there); else none, and the fan as it was.
+// The plane of one of the fan's triangles (the largest, or one of four spread over the fan)
+// when all its triangles but at most protect::detail::kMostLeftOut lie in it (exact), those few
+// then taken out of the fan's sectors, which stay disjoint (a cap fanned from a rim point,
+// certified with the side's triangles there); else none, and the fan as it was.
 std::optional<std::array<Vec3, 3>> flat_part(const protect::Complex& complex, protect::detail::Fan& fan) {
   const auto corners = [&](const protect::detail::Fan::Sector& s) {
     const auto& t = complex.triangles[s.triangle];
@@ -45,17 +45,24 @@ std::optional<std::array<Vec3, 3>> flat_part(const protect::Complex& complex, pr
     const auto c = corners(s);
     return (c[1] - c[0]).cross(c[2] - c[0]).squaredNorm();
   };
-  const std::array<Vec3, 3> plane =
-      corners(*std::max_element(fan.sectors.begin(), fan.sectors.end(),
-                                [&](const auto& x, const auto& y) { return area(x) < area(y); }));
-  const auto in_plane = [&](const protect::detail::Fan::Sector& s) {
-    return kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.start]) == 0 &&
-           kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.end]) == 0;
-  };
-  const auto off = static_cast<std::size_t>(std::count_if(fan.sectors.begin(), fan.sectors.end(), [&](const auto& s) { return !in_plane(s); }));
-  if (off > protect::detail::kMostLeftOut || off == fan.sectors.size()) return std::nullopt;
-  std::erase_if(fan.sectors, [&](const auto& s) { return !in_plane(s); });
-  return plane;
+  const auto& sectors = fan.sectors;
+  std::array<std::size_t, 5> tried{};
+  tried[0] = static_cast<std::size_t>(
+      std::max_element(sectors.begin(), sectors.end(), [&](const auto& x, const auto& y) { return area(x) < area(y); }) -
+      sectors.begin());
+  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = (k - 1) * sectors.size() / (tried.size() - 1);
+  for (const std::size_t reference : tried) {
+    const std::array<Vec3, 3> plane = corners(sectors[reference]);
+    const auto in_plane = [&](const protect::detail::Fan::Sector& s) {
+      return kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.start]) == 0 &&
+             kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.end]) == 0;
+    };
+    const auto off = static_cast<std::size_t>(std::count_if(sectors.begin(), sectors.end(), [&](const auto& s) { return !in_plane(s); }));
+    if (off > protect::detail::kMostLeftOut || off == sectors.size()) continue;
+    std::erase_if(fan.sectors, [&](const auto& s) { return !in_plane(s); });
+    return plane;
+  }
+  return std::nullopt;
 }
 
 }  // namespace

@@ -334,7 +334,8 @@ TEST_CASE("fans around a vertex: a certified fan's pairs are not visited") {
                         Case{"a shallow cone", 1, on_circle, false, false}, Case{"a steep cone", -3, on_circle, false, false},
                         Case{"a cone on a base fanned from its centre", 1, on_circle, false, true},
                         Case{"a cone on a base fanned from a rim point", 1, on_circle, false, true, true},
-                        Case{"a shallow cone on a base fanned from a rim point", 0.05, on_circle, false, true, true}}) {
+                        Case{"a shallow cone on a base fanned from a rim point", 0.05, on_circle, false, true, true},
+                        Case{"a cone under 1 degree on a base fanned from a rim point", 0.005, on_circle, false, true, true}}) {
     const std::string name = c.name;
     CAPTURE(name);
     io::TriangleSoup soup;

@@ -125,6 +125,9 @@ TEST_CASE("segment queries with fans searched by angle find the tree's hits exac
   SUBCASE("a cylinder with both caps fanned from rim points") {
     check_segments(fanned_cylinder(300, 1, 0, true), 2, {0, 1}, 5);
   }
+  SUBCASE("a tall one (the side's triangles at a corner larger than any chord)") {
+    check_segments(fanned_cylinder(300, 10, 0, true), 2, {0, 10}, 6);
+  }
 }
 
 // Two half cones whose apexes share a triangle: it is in both fans' sectors, and must be
