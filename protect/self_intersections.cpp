@@ -297,7 +297,8 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
   // were found. Then, given its corners, the answer: the max_pairs smallest crossing pairs are
   // kept in a max-heap, so they are what a scan in order of (first, second) stopping at
   // max_pairs would give, whatever order the pairs come in. (A pair the descent lists has a
-  // triangle of no fan, which holds no fan's centre: only_fan_centre matters across fans alone.)
+  // triangle of no fan, which a fan's centre may be a corner of but which belongs to no fan:
+  // only_fan_centre matters across fans alone.)
   const auto asked = [&](const std::array<std::uint32_t, 2>& pair) {
     return max_pairs > 0 && !(pairs.size() == max_pairs && !(pair < pairs.front()));
   };
