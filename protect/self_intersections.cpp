@@ -223,6 +223,10 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     std::vector<std::uint32_t> own, near_box;
     std::vector<kernel::Box3> near_boxes;
     for (std::uint32_t f = 0; f < fans.size(); ++f) {
+      if (stop && stop()) {  // a query of the fan's box each, before the search's try below
+        found.stopped = true;
+        return found;
+      }
       own.clear();
       for (const detail::Fan::Sector& s : fans[f].sectors)
         if (fan_of[s.triangle] == f) own.push_back(s.triangle);

@@ -658,8 +658,10 @@ TEST_CASE("fans around a vertex: a cap fanned from a rim point, certified in par
     CHECK(kernel::orient3d(complex.vertices[0], above, complex.vertices[tri[0] == 0 ? tri[1] : tri[0]],
                            complex.vertices[tri[2] == 0 ? tri[1] : tri[2]]) == 0);
   }
-  CHECK(left_out.size() <= protect::detail::kMostLeftOut);
-  if (!left_out.empty()) CHECK_FALSE(protect::detail::fan_about(complex, lower, above).has_value());
+  // The lower corner's whole star is certified (about an axis tilted by the side's triangles),
+  // and its three side triangles hold the vertical through both corners.
+  CHECK(left_out.size() == 3);
+  CHECK_FALSE(protect::detail::fan_about(complex, lower, above).has_value());
   // No turned fan (a point outside the predicates' range): nothing is handed back either.
   CHECK_FALSE(protect::detail::fan_about(complex, lower, Vec3(1, 0, 1e300), &left_out).has_value());
   CHECK(left_out.empty());
