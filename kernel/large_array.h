@@ -10,7 +10,8 @@
 // cube at 0.456% of the diagonal, faults fell from ~21,000 to ~4,000 and the CPU time of the
 // whole pipeline by ~40%, user time as much as system time (BENCHMARKS.md, "Huge pages"). Not on
 // a virtual machine that reports its free memory to the host, where a fresh huge page costs
-// five times what its base pages do (BENCHMARKS.md, "Session 29").
+// five times what its base pages do (BENCHMARKS.md, "Session 29") - unless its base pages are
+// dearer still (session 35; huge_page_policy.h decides).
 //
 // Blocks from 4 KiB to 1 MiB come from a pool of 2 MiB chunks (huge pages where advised, as
 // above), so that the many arrays of a small run (a few thousand vertices: each array tens of
