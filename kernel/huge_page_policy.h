@@ -16,13 +16,13 @@
 // guest, "PVM", that also reports free pages) every base-page fault costs 9-14 us (2.7-3.5 ms a
 // MiB, warm or cold), a fresh huge page ~2 ms a MiB when cold and 0.06 ms when warm: huge pages
 // win there whatever the host did before, and the pipeline at 2% ran 25-45% faster with them
-// (BENCHMARKS.md, "Session 35"). So where the balloon reports, the process times a few base-page
-// faults once and advises huge pages when one costs more than kDearBasePageFault.
+// (BENCHMARKS.md, "Session 35"). So each process times a few base-page faults once and advises
+// huge pages when one costs more than kDearBasePageFault, balloon or not.
 //
-// Cost: huge_pages_advised() reads the environment and a few sysfs files once per process, and
-// where a balloon reports free pages times 12 base-page faults (~50 us on the first kind of
-// machine, ~150 us on the second); the answer is cached (thread-safe). huge_pages_worthwhile()
-// reads the files on every call and asks its fault cost only when it needs it.
+// Cost: huge_pages_advised() reads the environment, times 6 base-page faults (~20 us on the
+// first kind of machine, ~80 us on the second) and, unless they were dear, reads a few sysfs
+// files, once per process; the answer is cached (thread-safe). huge_pages_worthwhile() asks its
+// fault cost and reads the files on every call.
 #pragma once
 
 #include <filesystem>
@@ -41,15 +41,15 @@ inline constexpr double kDearBasePageFault = 4.0;
 /// ("1" to advise huge pages, "0" not to; absent or anything else decides nothing), and
 /// `virtio_devices` a directory laid out as /sys/bus/virtio/devices (one subdirectory per device,
 /// each with files "device", e.g. "0x0005" for a balloon, and "features", one '0'/'1' character
-/// per feature bit from bit 0). Without an override: true when no balloon device has negotiated
-/// free page reporting (bit 5; no such directory included); where one has, true exactly when
-/// `base_page_fault_us()` (called only then) exceeds kDearBasePageFault.
+/// per feature bit from bit 0). Without an override: true when `base_page_fault_us()` (called
+/// first, and only then) exceeds kDearBasePageFault, else when no balloon device has negotiated
+/// free page reporting (bit 5; no such directory included).
 bool huge_pages_worthwhile(std::optional<std::string_view> override_value,
                            const std::filesystem::path& virtio_devices,
                            const std::function<double()>& base_page_fault_us);
 
 /// What the first touch of a fresh 4 KiB page costs this process, in microseconds: the least mean
-/// of three batches of four pages of a fresh mapping advised against huge pages (the least, so
+/// of three batches of two pages of a fresh mapping advised against huge pages (the least, so
 /// that a preemption in one batch does not count). Measured on the first call, then cached;
 /// thread-safe. 0 off Linux.
 double base_page_fault_microseconds();
