@@ -81,6 +81,18 @@ inline constexpr double kBallClearance = 0.5;
 /// the cheaper net skips fewer queries and the sum is no better.
 inline constexpr double kNetRadius = 1.5;
 
+/// When the net's triangle samples (its points but the triangles' corners) would be more than
+/// kNetExcess times as many as the lattice and the random candidates together, it is thinned (PolygonDomain::surface_candidates): a net point is
+/// left out when one kept before lies within kNetThinning net radii (thinning_grid.h), and the
+/// net's radius grows to (1 + kNetThinning) kNetRadius spacings. Why: triangle_samples gives
+/// every triangle at least a row along its longest edge, so a fan of d needles of length L (a CAD
+/// cylinder's cap fanned from its centre) gets d L / h points where its area needs ~L² / h²: on a
+/// closed cylinder of 20,000 rim points at 0.5%, 3.56 million net points of 3.79 million
+/// candidates. On models without such fans the net is about as large as the rest (fandisk at
+/// 0.5%: 67,355 of 140,110), far below the ratio, and nothing changes (BENCHMARKS.md, session 35).
+inline constexpr double kNetExcess = 4;
+inline constexpr double kNetThinning = 0.5;
+
 /// What Domain::surface_candidates appended, in order: a lattice that covers the big triangles
 /// (surface_lattice.h), chosen from first; random points that fill its gaps; a net of every
 /// patch, chosen from last.

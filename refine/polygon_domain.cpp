@@ -9,6 +9,7 @@
 #include <delpsc/kernel/predicates.h>
 
 #include "surface_lattice.h"
+#include "thinning_grid.h"
 #include "triangle_clusters.h"
 #include "triangle_samples.h"
 
@@ -274,9 +275,10 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
   // The net (made last, below): triangle_samples at kNetRadius spacings and every vertex of a
   // triangle. Counted first, so that the budget bounds it too; left out when it does not fit.
   const double net_radius = kNetRadius * spacing;
-  double net_expected = static_cast<double>(complex_.vertices.size());
+  double samples_expected = 0;  // the triangles' samples, without their corners
   for (const auto& tri : complex_.triangles)
-    net_expected += triangle_sample_count(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius);
+    samples_expected += triangle_sample_count(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius);
+  const double net_expected = static_cast<double>(complex_.vertices.size()) + samples_expected;
   if (total + net_expected <= static_cast<double>(budget)) total += net_expected;  // the lattice leaves it room
 
   // The lattice on clusters of at least half a spacing² (smaller ones would get less than one
@@ -382,19 +384,30 @@ CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t bud
   // The net when it fits in what the lattice and the random points left (counted, not made).
   if (static_cast<double>(points.size() - start) + net_expected <= static_cast<double>(budget)) {
     const std::size_t net_start = points.size();
+    // A net whose triangle samples are out of all proportion to the rest (fans of needles,
+    // kNetExcess; the corners are bounded by the input's size and not counted, so that a dense
+    // model at a coarse size is not thinned) is thinned: each point left out lies within
+    // kNetThinning net radii of one kept, so the kept ones reach every point of the patches
+    // within (1 + kNetThinning) net radii.
+    const bool thinned = samples_expected > kNetExcess * std::max(1.0, static_cast<double>(net_start - start));
+    ThinningGrid grid(thinned ? kNetThinning * net_radius : 0);
+    kernel::LargeVector<Vec3> row;  // one triangle's samples, before thinning
     std::vector<std::uint8_t> corner_done(complex_.vertices.size(), 0);
     for (std::uint32_t t = 0; t < complex_.triangles.size(); ++t) {
       const auto& tri = complex_.triangles[t];
+      row.clear();
       for (const std::uint32_t v : tri)
         if (!corner_done[v]) {
           corner_done[v] = 1;
-          points.push_back(complex_.vertices[v]);
+          row.push_back(complex_.vertices[v]);
         }
-      triangle_samples(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius, points);
+      triangle_samples(complex_.vertices[tri[0]], complex_.vertices[tri[1]], complex_.vertices[tri[2]], net_radius, row);
+      for (const Vec3& p : row)
+        if (!thinned || grid.admit(p)) points.push_back(p);
       patches.resize(points.size(), complex_.triangle_patch[t]);
     }
     parts.net = points.size() - net_start;
-    parts.net_radius = net_radius;
+    parts.net_radius = thinned ? (1 + kNetThinning) * net_radius : net_radius;
   }
   return parts;
 }

@@ -11,7 +11,11 @@
 #include <random>
 #include <vector>
 
+#include <delpsc/refine/initial_sample.h>
 #include <delpsc/refine/polygon_domain.h>
+#include <delpsc/refine/triangle_samples.h>
+
+#include "../support/acceptance.h"
 
 using namespace delpsc;
 using refine::PolygonDomain;
@@ -163,4 +167,41 @@ TEST_CASE("a triangle of two fans is searched in one") {
 TEST_CASE("a fan below the degree searched stays in the tree") {
   const PolygonDomain domain(fanned_cylinder(40, 1, 0));
   CHECK(domain.segment_fan_count() == 0);
+}
+
+TEST_CASE("the net of fanned caps is thinned, reaches every point within its radius, and the mesh is right") {
+  // 3,000 needles per cap and 6,000 on the side: triangle_samples gives each a row along its long
+  // edge, ~266,000 samples against ~30,000 lattice and random candidates at this spacing.
+  const io::TriangleSoup soup = fanned_cylinder(3000, 1, 0);
+  const PolygonDomain domain(soup);
+  const double spacing = 0.03;
+  kernel::LargeVector<Vec3> points;
+  kernel::LargeVector<std::uint32_t> patches;
+  const refine::CandidateParts parts = domain.surface_candidates(spacing, 1u << 30, points, patches);
+  const double unthinned_radius = refine::kNetRadius * spacing;
+  CHECK(parts.net_radius == doctest::Approx((1 + refine::kNetThinning) * unthinned_radius).epsilon(1e-15));
+  double unthinned = static_cast<double>(soup.vertices.size());
+  for (const auto& t : soup.triangles)
+    unthinned += refine::triangle_sample_count(soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]], unthinned_radius);
+  CHECK(static_cast<double>(parts.net) * 8 < unthinned);  // 27,375 of 270,002
+  CHECK(static_cast<double>(parts.net) > 1000);
+  // The reach the mesher's cover bound assumes: every point of every triangle within net_radius
+  // of a net point (probed at random points of random triangles, brute force).
+  const std::vector<Vec3> net(points.end() - static_cast<std::ptrdiff_t>(parts.net), points.end());
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<std::size_t> which(0, soup.triangles.size() - 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < 1500; ++k) {
+    const auto& t = soup.triangles[which(rng)];
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const Vec3 p = soup.vertices[t[0]] + u * (soup.vertices[t[1]] - soup.vertices[t[0]]) +
+                   v * (soup.vertices[t[2]] - soup.vertices[t[0]]);
+    double nearest = HUGE_VAL;
+    for (const Vec3& q : net) nearest = std::min(nearest, (q - p).squaredNorm());
+    CHECK(std::sqrt(nearest) <= parts.net_radius);
+  }
+  // The whole mesher on it (the thinned net's radius goes into the cover bound of the first
+  // examination): disk condition, G1, G2 and orientation.
+  test::check_acceptance("fanned cylinder", soup, 0.01);
 }
