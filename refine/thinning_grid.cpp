@@ -22,7 +22,7 @@ ThinningGrid::ThinningGrid(double separation) {
 
 bool ThinningGrid::admit(const Vec3& p) {
   if (inverse_side_ == 0 || !p.allFinite()) return true;
-  Cell cell;
+  Cell cell{};
   std::int64_t* const index[3] = {&cell.x, &cell.y, &cell.z};
   for (int i = 0; i < 3; ++i) {
     // floor(p / side) in doubles: a point moved across a cell's face by the rounding of the
@@ -39,9 +39,8 @@ bool ThinningGrid::occupy(const Cell& cell) {
   const std::size_t mask = table_.size() - 1;
   for (std::size_t i = cell_hash(cell.x, cell.y, cell.z) & mask;; i = (i + 1) & mask) {
     Cell& slot = table_[i];
-    if (!slot.used) {
+    if (slot.x == kFree) {
       slot = cell;
-      slot.used = true;
       ++count_;
       return true;
     }
@@ -50,11 +49,11 @@ bool ThinningGrid::occupy(const Cell& cell) {
 }
 
 void ThinningGrid::grow() {
-  std::vector<Cell> old(table_.empty() ? 64 : 2 * table_.size());
+  kernel::LargeVector<Cell> old(table_.empty() ? 64 : 2 * table_.size(), Cell{kFree, 0, 0});
   old.swap(table_);
   count_ = 0;
   for (const Cell& c : old)
-    if (c.used) occupy(c);
+    if (c.x != kFree) occupy(c);
 }
 
 }  // namespace delpsc::refine

@@ -14,8 +14,9 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <limits>
 
+#include <delpsc/kernel/large_array.h>
 #include <delpsc/kernel/point.h>
 
 namespace delpsc::refine {
@@ -33,16 +34,19 @@ class ThinningGrid {
   std::size_t occupied() const { return count_; }
 
  private:
+  // A cell's integer coordinates; x = kFree marks an empty slot (cell indices stay below 2^62).
   struct Cell {
-    std::int64_t x = 0, y = 0, z = 0;
-    bool used = false;
+    std::int64_t x, y, z;
   };
+  static constexpr std::int64_t kFree = std::numeric_limits<std::int64_t>::min();
   void grow();
   // Whether `cell` was free in the table (it is occupied after the call).
   bool occupy(const Cell& cell);
 
   double inverse_side_ = 0;  // 0: admit everything
-  std::vector<Cell> table_;  // open addressing, a power of two in size, at most half full
+  // Open addressing, a power of two in size, at most half full; on huge pages where they are
+  // advised (a fan's net occupies ~10^5 cells: 24 bytes each, the table twice that).
+  kernel::LargeVector<Cell> table_;
   std::size_t count_ = 0;
 };
 
