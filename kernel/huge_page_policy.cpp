@@ -46,7 +46,7 @@ bool huge_pages_worthwhile(std::optional<std::string_view> override_value,
                            const std::function<double()>& base_page_fault_us) {
   if (override_value == "1") return true;
   if (override_value == "0") return false;
-  // The fault cost first: timing six faults (~80 us where they are dear) is cheaper than a first
+  // The fault cost first: timing six faults (~0.2 ms where they are dear) is cheaper than a first
   // walk of sysfs through std::filesystem and iostreams (~0.7 ms on those machines, most of it
   // the faults of their own first use), which the answer then does not need.
   return base_page_fault_us() > kDearBasePageFault || !reports_free_pages(virtio_devices);

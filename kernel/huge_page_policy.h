@@ -15,14 +15,14 @@
 // But the balloon alone does not decide it: on the machines of session 35 (a paravirtualised
 // guest, "PVM", that also reports free pages) every base-page fault costs 9-14 us (2.7-3.5 ms a
 // MiB, warm or cold), a fresh huge page ~2 ms a MiB when cold and 0.06 ms when warm: huge pages
-// win there whatever the host did before, and the pipeline at 2% ran 25-45% faster with them
+// win there whatever the host did before, and runs at 2% took 26-39% less CPU time with them
 // (BENCHMARKS.md, "Session 35"). So each process times a few base-page faults once and advises
 // huge pages when one costs more than kDearBasePageFault, balloon or not.
 //
-// Cost: huge_pages_advised() reads the environment, times 6 base-page faults (~20 us on the
-// first kind of machine, ~80 us on the second) and, unless they were dear, reads a few sysfs
-// files, once per process; the answer is cached (thread-safe). huge_pages_worthwhile() asks its
-// fault cost and reads the files on every call.
+// Cost: huge_pages_advised() reads the environment, times 6 base-page faults (with the mapping,
+// ~0.05 ms on the first kind of machine, ~0.2 ms on the second) and, unless they were dear,
+// reads a few sysfs files, once per process; the answer is cached (thread-safe).
+// huge_pages_worthwhile() asks its fault cost and reads the files on every call.
 #pragma once
 
 #include <filesystem>
