@@ -107,12 +107,8 @@ bool certify_part(const Complex& complex, Fan& fan, std::size_t min_degree, doub
   const auto parallel = [&](const Vec3& n, const Vec3& axis, double cosine) {
     return std::abs(n.dot(axis)) >= cosine * n.norm();
   };
-  std::array<std::size_t, 5> tried{};  // the reference's candidates, indices into star
-  for (std::size_t i = 0; i < star.size(); ++i)
-    if (normal(star[i]).squaredNorm() > normal(star[tried[0]]).squaredNorm()) tried[0] = i;
-  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = (k - 1) * star.size() / (tried.size() - 1);
   std::size_t reference = 0, most = 0;
-  for (const std::size_t candidate : tried) {
+  for (const std::size_t candidate : reference_candidates(complex, fan.centre, star)) {
     const Vec3 axis = normal(star[candidate]).normalized();
     if (!axis.allFinite()) continue;
     const auto count = static_cast<std::size_t>(
@@ -336,6 +332,19 @@ void sectors_within(const Complex& complex, const Fan& fan, const Vec3& p, doubl
   if (!kernel::in_exact_range(below) || !kernel::in_exact_range(above)) return all();
   const std::array<const double*, 2> sides{below.data(), above.data()};
   sectors_near(complex, fan, sides, out);
+}
+
+std::array<std::size_t, 5> reference_candidates(const Complex& complex, std::uint32_t centre,
+                                                std::span<const Fan::Sector> sectors) {
+  const Vec3& c = complex.vertices[centre];
+  const auto twice_area = [&](const Fan::Sector& s) {
+    return (complex.vertices[s.start] - c).cross(complex.vertices[s.end] - c).squaredNorm();
+  };
+  std::array<std::size_t, 5> tried{};
+  for (std::size_t i = 0; i < sectors.size(); ++i)
+    if (twice_area(sectors[i]) > twice_area(sectors[tried[0]])) tried[0] = i;
+  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = (k - 1) * sectors.size() / (tried.size() - 1);
+  return tried;
 }
 
 }  // namespace delpsc::protect::detail

@@ -60,6 +60,13 @@ inline constexpr std::size_t kMostLeftOut = 8;
 std::optional<Fan> fan_about(const Complex& complex, const Fan& fan, const Vec3& through,
                              std::vector<std::uint32_t>* left_out = nullptr);
 
+/// Where to look for the plane most of a fan's triangles lie in or near (a cap fanned from a rim
+/// vertex, with the side's few triangles there): indices into `sectors` of the one of largest
+/// area (the first of equals; area from its centre and its two other vertices) and of four
+/// spread evenly over them in order. Precondition: `sectors` not empty. O(d).
+std::array<std::size_t, 5> reference_candidates(const Complex& complex, std::uint32_t centre,
+                                                std::span<const Fan::Sector> sectors);
+
 /// Appends to `out` the indices into fan.sectors of every sector whose closed shadow along the
 /// axis may meet triangle `triangle`'s (and a few more; duplicates possible), or all of them
 /// when the triangle meets the axis anywhere but, perhaps, in a vertex off the fan's centre - so

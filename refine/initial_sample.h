@@ -82,9 +82,10 @@ inline constexpr double kBallClearance = 0.5;
 inline constexpr double kNetRadius = 1.5;
 
 /// When the net's triangle samples (its points but the triangles' corners) would be more than
-/// kNetExcess times as many as the lattice and the random candidates together, it is thinned (PolygonDomain::surface_candidates): a net point is
-/// left out when one kept before lies within kNetThinning net radii (thinning_grid.h), and the
-/// net's radius grows to (1 + kNetThinning) kNetRadius spacings. Why: triangle_samples gives
+/// kNetExcess times as many as the lattice and the random candidates together, it is thinned
+/// (PolygonDomain::surface_candidates): a net point is left out when one kept before lies within
+/// kNetThinning net radii (thinning_grid.h), and the net's radius grows to (1 + kNetThinning)
+/// kNetRadius spacings. Why: triangle_samples gives
 /// every triangle at least a row along its longest edge, so a fan of d needles of length L (a CAD
 /// cylinder's cap fanned from its centre) gets d L / h points where its area needs ~L² / h²: on a
 /// closed cylinder of 20,000 rim points at 0.5%, 3.56 million net points of 3.79 million

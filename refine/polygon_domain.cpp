@@ -42,17 +42,9 @@ std::optional<std::array<Vec3, 3>> flat_part(const protect::Complex& complex, pr
     const auto& t = complex.triangles[s.triangle];
     return std::array<Vec3, 3>{complex.vertices[t[0]], complex.vertices[t[1]], complex.vertices[t[2]]};
   };
-  const auto area = [&](const protect::detail::Fan::Sector& s) {
-    const auto c = corners(s);
-    return (c[1] - c[0]).cross(c[2] - c[0]).squaredNorm();
-  };
   const auto& sectors = fan.sectors;
-  std::array<std::size_t, 5> tried{};
-  tried[0] = static_cast<std::size_t>(
-      std::max_element(sectors.begin(), sectors.end(), [&](const auto& x, const auto& y) { return area(x) < area(y); }) -
-      sectors.begin());
-  for (std::size_t k = 1; k < tried.size(); ++k) tried[k] = (k - 1) * sectors.size() / (tried.size() - 1);
-  for (const std::size_t reference : tried) {
+  if (sectors.empty()) return std::nullopt;
+  for (const std::size_t reference : protect::detail::reference_candidates(complex, fan.centre, sectors)) {
     const std::array<Vec3, 3> plane = corners(sectors[reference]);
     const auto in_plane = [&](const protect::detail::Fan::Sector& s) {
       return kernel::orient3d(plane[0], plane[1], plane[2], complex.vertices[s.start]) == 0 &&
