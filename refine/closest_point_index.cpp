@@ -223,9 +223,10 @@ void ClosestPointIndex::search_fan(const Fan& fan, const Aim& at, const Vec3& p,
   }
 }
 
-std::optional<kernel::ClosestTriangle> ClosestPointIndex::closest_point(const Vec3& p) const {
-  if (fans_.empty()) return all_->closest_point(p);
-  kernel::ClosestTriangle best{0, Vec3::Zero(), HUGE_VAL};
+std::optional<kernel::ClosestTriangle> ClosestPointIndex::closest_point(const Vec3& p, double below_squared) const {
+  if (fans_.empty()) return all_->closest_point(p, below_squared);
+  // The bound is the best so far until a triangle beats it (try_triangle keeps strictly nearer).
+  kernel::ClosestTriangle best{0, Vec3::Zero(), below_squared};
   // First each fan's wedges at p's direction: cheap, and near a fan they bound the tree query of
   // the rest tightly (on a cylinder's cap its side is far, and finding the nearest of its strips
   // without a bound was most of the query). Without a bound a fan's angular search would reach
@@ -238,7 +239,7 @@ std::optional<kernel::ClosestTriangle> ClosestPointIndex::closest_point(const Ve
   }
   for (const Fan& fan : fans_)
     if (fan.box.squared_distance(p) < best.squared_distance) search_fan(fan, aim(fan, p), p, best);
-  if (!(best.squared_distance < HUGE_VAL)) return std::nullopt;
+  if (!(best.squared_distance < below_squared)) return std::nullopt;
   return best;
 }
 

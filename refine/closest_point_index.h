@@ -31,6 +31,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -51,8 +52,9 @@ class ClosestPointIndex {
   /// outlive the index. Preconditions as for kernel::AabbTree.
   ClosestPointIndex(std::span<const Vec3> vertices, std::span<const Triangle> triangles, const kernel::AabbTree& all);
 
-  /// As kernel::AabbTree::closest_point over all the triangles (see the file comment).
-  std::optional<kernel::ClosestTriangle> closest_point(const Vec3& p) const;
+  /// As kernel::AabbTree::closest_point over all the triangles (see the file comment), with its
+  /// `below_squared` bound: only a triangle at squared distance below it counts.
+  std::optional<kernel::ClosestTriangle> closest_point(const Vec3& p, double below_squared = HUGE_VAL) const;
 
   /// The fans searched by angle, and their triangles, for tests and statistics.
   std::size_t fan_count() const { return fans_.size(); }

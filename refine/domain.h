@@ -14,6 +14,7 @@
 // tree). All queries are const and must be safe to call from several threads at once.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -112,8 +113,11 @@ class Domain {
   virtual void intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const = 0;
   /// The same for the ray {origin + t direction, t >= 0}; direction != 0.
   virtual void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const = 0;
-  /// The closest point of all patches to x; nullopt for an empty domain.
-  virtual std::optional<ClosestSurfacePoint> closest_point(const Vec3& x) const = 0;
+  /// The closest point of all patches to x; nullopt for an empty domain. With a finite
+  /// `below_squared`, only a point at squared distance below it counts (nullopt when there is
+  /// none): a caller that only asks whether x lies within some distance of the domain bounds the
+  /// search by it from the start, which spares most of it.
+  virtual std::optional<ClosestSurfacePoint> closest_point(const Vec3& x, double below_squared = HUGE_VAL) const = 0;
 
   /// Appends candidate points for the mesher's initial sample (initial_sample.h) to `points`,
   /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and

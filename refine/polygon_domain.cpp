@@ -242,8 +242,8 @@ void PolygonDomain::intersect_ray(const Vec3& origin, const Vec3& direction, std
   merge_hits(hits, origin, origin + direction, out);
 }
 
-std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x) const {
-  const auto c = closest_.closest_point(x);
+std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x, double below_squared) const {
+  const auto c = closest_.closest_point(x, below_squared);
   if (!c) return std::nullopt;
   const auto& t = complex_.triangles[c->triangle];
   const Vec3 &a = complex_.vertices[t[0]], &b = complex_.vertices[t[1]], &d = complex_.vertices[t[2]];

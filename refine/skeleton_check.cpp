@@ -179,6 +179,9 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
   };
   auto problem = [&](std::uint32_t patch, const std::string& what) { general("patch " + std::to_string(patch) + ": " + what); };
   if (!mesh_labels_in_range(mesh, domain, general)) return report;  // the rest would read out of bounds
+  // The bound of the vertices' closest-point searches (below); unbounded for a tolerance of 0 or
+  // less, where the bound would refuse a vertex exactly on the domain.
+  const double near_squared = tolerance > 0 ? 4 * tolerance * tolerance : HUGE_VAL;
   // Skl¹ and Skl⁰ on the complex: each feature edge's ends on its curve (ball centres lie on
   // their curves, §2.1), each corner vertex at a corner of the domain.
   // The ends are asked curve by curve in one batch each: a polyline curve of n segments answers
@@ -267,7 +270,10 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
       ++ps.vertices;
       if (!link_shape(fan).simple)
         problem(sigma, "the triangles around vertex " + std::to_string(v) + " are not one disk"), ps.manifold = false;
-      const auto close = domain.closest_point(mesh.vertices[v]);
+      // Bounded by four times the tolerance squared: the search then only opens the tree's nodes
+      // near v (a third of this check's time went to closest points), and whenever v is within
+      // the tolerance the answer is the unbounded one.
+      const auto close = domain.closest_point(mesh.vertices[v], near_squared);
       if (!close || close->squared_distance > tolerance * tolerance)
         problem(sigma, "vertex " + std::to_string(v) + " is off the domain");
       else if (!std::binary_search(on_curve.begin(), on_curve.end(), v) && close->patch != sigma)

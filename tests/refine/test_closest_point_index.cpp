@@ -75,19 +75,26 @@ void check_against_tree(const Shape& s, std::size_t min_fans, std::uint32_t seed
   for (const Vec3& v : s.vertices) queries.push_back(v);  // every vertex, the centres among them
   for (int i = 0; i < 200; ++i)                              // on and near the z axis
     queries.push_back(Vec3(1e-9 * (unit(rng) - 0.5), 0, (unit(rng) - 0.5) * 2));
-  int wrong = 0, inconsistent = 0;
+  int wrong = 0, inconsistent = 0, bounded_wrong = 0;
   for (const Vec3& p : queries) {
     const auto expected = tree.closest_point(p);
     const auto got = index.closest_point(p);
     REQUIRE(expected.has_value());
     REQUIRE(got.has_value());
     if (std::abs(std::sqrt(got->squared_distance) - std::sqrt(expected->squared_distance)) > 1e-12 * diagonal) ++wrong;
+    // Bounded: only a triangle strictly nearer than the bound counts - none below half the
+    // distance, the closest one below twice it (or below a tiny bound for a point on the surface).
+    const double d2 = expected->squared_distance;
+    if (d2 > 0 && index.closest_point(p, 0.5 * d2)) ++bounded_wrong;
+    const auto within = index.closest_point(p, d2 > 0 ? 2 * d2 : 1e-300);
+    if (!within || std::abs(std::sqrt(within->squared_distance) - std::sqrt(d2)) > 1e-12 * diagonal) ++bounded_wrong;
     const Triangle& t = s.triangles[got->triangle];
     const auto own = kernel::closest_point_on_triangle(p, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
     if ((own.point - got->point).norm() > 1e-12 * diagonal) ++inconsistent;
   }
   CHECK(wrong == 0);
   CHECK(inconsistent == 0);
+  CHECK(bounded_wrong == 0);
 }
 
 }  // namespace
@@ -192,5 +199,9 @@ TEST_CASE("without a vertex of 64 triangles the index is the tree, triangle for 
   for (int i = 0; i < 500; ++i) {
     const Vec3 p(u(rng), u(rng), u(rng));
     CHECK(index.closest_point(p)->triangle == tree.closest_point(p)->triangle);
+    // The bound passes through to the tree: nothing strictly below the distance itself.
+    const double d2 = tree.closest_point(p)->squared_distance;
+    CHECK_FALSE(index.closest_point(p, d2).has_value());
+    CHECK(index.closest_point(p, 2 * d2 + 1e-300)->triangle == tree.closest_point(p)->triangle);
   }
 }

@@ -180,6 +180,23 @@ TEST_CASE("skeleton check: holes, pinched fans and vertices off the model are re
     const auto report = refine::check_skeleton(mesh, domain, tolerance(domain));
     CHECK(mentions(report, "vertex " + std::to_string(v) + " is off the domain"));
   }
+  SUBCASE("a vertex just off the model: the tolerance decides, near the closest-point search's bound and beyond it") {
+    // The search for a vertex's closest point is bounded by twice the tolerance; a vertex is off
+    // the domain beyond the tolerance, whether the bounded search finds a point or none.
+    const auto& t = original.triangles[fan[0]];
+    const Vec3 normal = (original.vertices[t[1]] - original.vertices[t[0]])
+                            .cross(original.vertices[t[2]] - original.vertices[t[0]])
+                            .normalized();
+    const double tol = tolerance(domain);
+    for (const double times : {0.5, 1.5, 3.0, 1e3}) {
+      CAPTURE(times);
+      io::SurfaceMesh mesh = original;
+      mesh.vertices[v] += times * tol * normal;
+      const auto report = refine::check_skeleton(mesh, domain, tol);
+      CHECK(mentions(report, "vertex " + std::to_string(v) + " is off the domain") == (times > 1));
+      CHECK(report.ok() == (times < 1));
+    }
+  }
   SUBCASE("a patch's triangle labelled with another patch") {
     io::SurfaceMesh mesh = original;
     mesh.triangle_patch[fan[0]] = static_cast<std::int32_t>((patch + 1) % domain.patch_count());
