@@ -229,8 +229,8 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   // Issue 6: the distances to the input, sampled at spacing λ/2 (coarser only for a run stopped
   // far short of its size: approximation_spacing) - lower bounds at most the spacing below the
   // true ones, in practice within a few percent (refine/approximation_error.h).
-  // --no-distances skips it: on the CGAL demo models at 1% it takes half to nine tenths of
-  // refinement's time (BENCHMARKS.md, session 31).
+  // --no-distances skips it: on the CGAL demo models at 1% it takes two fifths to four fifths of
+  // refinement's time (BENCHMARKS.md, session 36).
   refine::ApproximationError approximation;
   double seconds_approximation = 0;
   if (!o.no_distances) {
@@ -436,8 +436,8 @@ Runner register_mesh(CLI::App& app) {
                "curves' edges, every vertex on the model; exit 1 if it fails");
   app.add_flag("--no-distances", o->no_distances,
                "Do not measure the distances between the mesh and the input (hausdorff..., feature_distance and "
-               "hausdorff_spacing are then 'unmeasured'): on the CGAL demo models at 1% the measurement takes half "
-               "to nine tenths of refinement's time");
+               "hausdorff_spacing are then 'unmeasured'): on the CGAL demo models at 1% the measurement takes two "
+               "fifths to four fifths of refinement's time");
   app.add_flag("--no-initial-sample", o->no_initial_sample,
                "Start refinement from the protecting balls alone, as the paper does, instead of also from a "
                "sample of the surface whose points are farther than the size apart (2-3 times as slow, ~20% more "
