@@ -74,12 +74,14 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("sharpest_fold_degrees", sharpest ? sharpest->dihedral_degrees : 180.0);
   // Every warning line this command prints (or would print without -q): the reader's, then
   // load_model's and load_complex's own (unused vertices, zero-area triangles, flat caps), then
-  // the three below. Counting the reader's alone said 0 beside two printed lines.
+  // the four below. Counting the reader's alone said 0 beside two printed lines.
   const std::string fold = fold_warning(complex, sharpest, o.input);
+  const std::string unmarked = unmarked_sharp_edge_warning(complex, o.angle, o.input);
   report("warnings", model.report.warnings.size() + (model.report.unused_vertices > 0) +
                          !model.report.degenerate_triangles.empty() + !complex.cleanup.flat_caps.empty() +
-                         !fold.empty() + (crossing > 0) + !complex.pinches.empty());
+                         !fold.empty() + !unmarked.empty() + (crossing > 0) + !complex.pinches.empty());
   if (!fold.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
+  if (!unmarked.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", unmarked.c_str());
   if (crossing > 0 && !g.quiet)
     std::fprintf(stderr,
                  "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",

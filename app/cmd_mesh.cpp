@@ -108,9 +108,12 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   reject_self_intersections(domain.complex(), domain.tree(), o.input, &time_limit);
   reject_empty_complex(domain.complex(), model, o.input, "mesh");
   reject_pinched_patches(domain.complex(), o.input);
-  if (!g.quiet)
+  if (!g.quiet) {
     if (const std::string fold = fold_warning(domain.complex(), sharpest_fold(domain.complex()), o.input); !fold.empty())
       std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
+    if (const std::string unmarked = unmarked_sharp_edge_warning(domain.complex(), o.angle, o.input); !unmarked.empty())
+      std::fprintf(stderr, "delpsc: warning: %s\n", unmarked.c_str());
+  }
   const kernel::Box3 box = domain.bounding_box();
   const double lambda = parse_size(o.size, (box.hi - box.lo).norm());
   // CGAL's edge_size: the largest protecting ball radius, λ unless given (Protect(D, λ) of the

@@ -22,11 +22,12 @@ double dihedral_degrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
 }  // namespace
 
 std::optional<Fold> sharpest_fold_near(const Complex& complex, const Vec3& where, double radius,
-                                       double below_degrees) {
+                                       double below_degrees, FoldEdges which) {
   std::optional<Fold> best;
   for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
     const auto faces = complex.edge_triangle_ids(e);
     if (faces.size() != 2) continue;
+    if (which == FoldEdges::off_curves && complex.edge_curve[e] != kNoIndex) continue;
     const Vec3 &a = complex.vertices[complex.edges[e][0]], &b = complex.vertices[complex.edges[e][1]];
     if ((kernel::closest_point_on_segment(where, a, b).point - where).norm() > radius) continue;
     Vec3 opposite[2] = {Vec3::Zero(), Vec3::Zero()};

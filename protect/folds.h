@@ -22,12 +22,16 @@ struct Fold {
   double dihedral_degrees = 180;  ///< angle between its two triangles: 180 flat, 0 folded shut
 };
 
+/// Which edges sharpest_fold_near looks at: all, or only those on no feature curve (a sharp edge
+/// there is one the feature angle left out, which refinement must then resolve as smooth surface).
+enum class FoldEdges { all, off_curves };
+
 /// The edge with exactly two triangles and the smallest dihedral angle below `below_degrees`
-/// among those within `radius` of `where`, or nullopt. The angle is measured between the two
-/// triangles' third vertices around the edge, so it does not depend on their orientation.
-/// Rounded arithmetic: a diagnostic, never a combinatorial decision. O(edges).
+/// among those within `radius` of `where` (and of `which`), or nullopt. The angle is measured
+/// between the two triangles' third vertices around the edge, so it does not depend on their
+/// orientation. Rounded arithmetic: a diagnostic, never a combinatorial decision. O(edges).
 std::optional<Fold> sharpest_fold_near(const Complex& complex, const Vec3& where, double radius,
-                                       double below_degrees);
+                                       double below_degrees, FoldEdges which = FoldEdges::all);
 
 /// Two feature curves leaving a corner at a small angle: a narrow wedge of the surface between
 /// them, or a needle triangle whose edges are all sharp (libcgal-demo's triceratops.off, 5.3°).

@@ -259,6 +259,13 @@ grep -q "times what --size 4% needs on this model's area" "$TMP/err" || fail "we
 grep -q "the input folds back on itself there: its two triangles on the edge from (0, 0, 0) to (0, 0, 0.5) are 2 degrees apart" \
   "$TMP/err" || fail "wedge: the fold is not named: $(head -c 400 "$TMP/err")"
 (( $(value vertices) > 8 * $(value vertices_expected) )) || fail "wedge: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
+! grep -q "but no feature curve" "$TMP/err" || fail "wedge: an unmarked sharp edge named at the default --angle"
+# At --angle 120 the wedge's right-angled edges are no curves: a warning names one before
+# refining (input_defects.h), instead of leaving the fold to take the blame (capped: it fails).
+expect 1 "but no feature curve at --angle 120" \
+  -- mesh "$TMP/wedge.off" --size 4% --angle 120 --max-vertices 20000 -o "$TMP/wedge120.mesh"
+grep -q "is sharp - its triangles' normals differ by 9[0-9.]* degrees - but no feature curve at --angle 120" "$TMP/err" ||
+  fail "wedge at 120: no warning of its unmarked edges: $(head -c 600 "$TMP/err")"
 # A slab 0.01 thick (a quarter of λ): its two big faces need vertices at the thickness's scale
 # all over (~36 times the count), no fold or narrow corner anywhere: the warning's other wording.
 printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 0.01\n1 0 0.01\n0 1 0.01\n1 1 0.01\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n' >"$TMP/slab.off"

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <delpsc/io/shapes.h>
 #include <delpsc/protect/folds.h>
@@ -38,6 +39,33 @@ TEST_CASE("folds: a wedge's apex edges, not the cube's") {
   const auto fold = protect::sharpest_fold_near(f, f.vertices.front(), 100, 15);
   REQUIRE(fold);
   CHECK(fold->dihedral_degrees == doctest::Approx(5).epsilon(1e-6));
+}
+
+TEST_CASE("folds off the curves: a cube's edges once a feature angle above 90 degrees leaves them out") {
+  const Vec3 centre(0.5, 0.5, 0.5);
+  // At the default angle every cube edge is on a curve: off them only the faces' flat edges.
+  const protect::Complex marked = protect::build_complex(io::make_cube(4));
+  CHECK(protect::sharpest_fold_near(marked, centre, 10, 91));
+  CHECK_FALSE(protect::sharpest_fold_near(marked, centre, 10, 179, protect::FoldEdges::off_curves));
+  CHECK(protect::sharpest_fold_near(marked, centre, 10, 181, protect::FoldEdges::off_curves)->dihedral_degrees ==
+        doctest::Approx(180));
+  // At 120 degrees none is a curve: the right angles are found off the curves.
+  protect::ComplexOptions wide;
+  wide.feature_angle_degrees = 120;
+  const protect::Complex unmarked = protect::build_complex(io::make_cube(4), wide);
+  REQUIRE(unmarked.curves.empty());
+  const auto edge = protect::sharpest_fold_near(unmarked, centre, 10, 119, protect::FoldEdges::off_curves);
+  REQUIRE(edge);
+  CHECK(edge->dihedral_degrees == doctest::Approx(90));
+  // The flat edges inside the faces are off the curves too, but no sharper than 180 degrees.
+  CHECK_FALSE(protect::sharpest_fold_near(unmarked, centre, 10, 89, protect::FoldEdges::off_curves));
+  // A wedge at 120 degrees: its 2 degree apex is still a curve (normals 178 degrees apart), its
+  // right-angled edges are not, and those are what off_curves finds.
+  const protect::Complex wedge = protect::build_complex(io::make_wedge(2, 0.1), wide);
+  const auto sharp = protect::sharpest_fold_near(wedge, Vec3::Zero(), HUGE_VAL, 119, protect::FoldEdges::off_curves);
+  REQUIRE(sharp);
+  CHECK(sharp->dihedral_degrees > 80);
+  CHECK(protect::sharpest_fold_near(wedge, Vec3::Zero(), HUGE_VAL, 15)->dihedral_degrees == doctest::Approx(2).epsilon(1e-6));
 }
 
 TEST_CASE("narrow corners: a wedge's apex, where its legs leave at the wedge's angle; none on a cube") {
