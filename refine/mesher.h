@@ -190,7 +190,8 @@ class Mesher {
   void run();
 
   /// ∪ Skl^i: restricted triangles labelled by patch (consistently oriented per connected
-  /// component, outward where the component is closed, elsewhere - open sheets, closed shells
+  /// component, outward where the component is closed - into the cavity for one inside an odd
+  /// number of other closed components -, elsewhere - open sheets, closed shells
   /// meeting along non-manifold edges - as the input's triangles there are;
   /// refine/triangle_orientation.h), edges between consecutive ball centres labelled by curve,
   /// corners.

@@ -1,11 +1,67 @@
 #include "triangle_orientation.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <utility>
+#include <vector>
 
+#include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/kernel/large_array.h>
 
 namespace delpsc::refine {
+
+namespace {
+
+/// A closed orientable component: its triangles closed_triangles[first, end), its box, and one
+/// of its vertices.
+struct ClosedComponent {
+  std::size_t first = 0, end = 0;
+  kernel::Box3 box;
+  Vec3 probe = Vec3::Zero();
+};
+
+/// The winding number of the closed triangle set `ts` (outward) around p: the sum of the solid
+/// angles its triangles subtend at p over 4π (Van Oosterom and Strackee's formula), near 1
+/// inside and 0 outside. p lies off the set (components are disjoint). O(|ts|).
+double winding_number(const Vec3& p, std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+                      std::span<const std::uint32_t> ts) {
+  double sum = 0;
+  for (const std::uint32_t t : ts) {
+    const Vec3 a = vertices[triangles[t][0]] - p, b = vertices[triangles[t][1]] - p, c = vertices[triangles[t][2]] - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double det = a.dot(b.cross(c));
+    const double den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+    sum += 2 * std::atan2(det, den);
+  }
+  return sum / (4 * std::numbers::pi);
+}
+
+/// Each closed component was turned to a positive volume, outward as if it bounded a solid of
+/// its own. One inside an odd number of others bounds a cavity of the solid they make (a
+/// hollow ball's inner sphere), whose outside is the cavity: it is turned to face into it. The
+/// components are disjoint, so whether one lies inside another is the winding number of any of
+/// its vertices; only the components whose box holds that vertex are asked.
+void turn_cavities(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles,
+                   const std::vector<ClosedComponent>& components, const kernel::LargeVector<std::uint32_t>& members) {
+  if (components.size() < 2) return;
+  std::vector<std::uint8_t> reverse(components.size(), 0);
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    int depth = 0;
+    for (std::size_t j = 0; j < components.size(); ++j) {
+      if (j == i || !components[j].box.contains(components[i].probe)) continue;
+      const std::span<const std::uint32_t> ts(members.data() + components[j].first, components[j].end - components[j].first);
+      depth += std::abs(winding_number(components[i].probe, vertices, triangles, ts)) > 0.5;
+    }
+    reverse[i] = static_cast<std::uint8_t>(depth % 2);
+  }
+  for (std::size_t i = 0; i < components.size(); ++i)
+    if (reverse[i])
+      for (std::size_t k = components[i].first; k < components[i].end; ++k)
+        std::swap(triangles[members[k]][1], triangles[members[k]][2]);
+}
+
+}  // namespace
 
 std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles,
                              const std::function<int(std::uint32_t)>& prefer) {
@@ -73,6 +129,10 @@ std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::arra
   kernel::LargeVector<std::int8_t> flip(n, -1);  // -1: not reached yet
   std::size_t bad = 0;
   kernel::LargeVector<std::uint32_t> component, queue;
+  // The closed orientable components, turned outward one by one below; a second pass turns
+  // those nested inside an odd number of others (cavities) to face into them.
+  std::vector<ClosedComponent> closed_components;
+  kernel::LargeVector<std::uint32_t> closed_triangles;
   for (std::uint32_t start = 0; start < n; ++start) {
     if (flip[start] >= 0) continue;
     component.clear();
@@ -119,7 +179,18 @@ std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::arra
     }
     if (reverse)
       for (const std::uint32_t t : component) std::swap(triangles[t][1], triangles[t][2]);
+    if (closed && orientable) {
+      ClosedComponent c;
+      c.first = closed_triangles.size();
+      closed_triangles.insert(closed_triangles.end(), component.begin(), component.end());
+      c.end = closed_triangles.size();
+      for (const std::uint32_t t : component)
+        for (const std::uint32_t v : triangles[t]) c.box.extend(vertices[v]);
+      c.probe = vertices[triangles[component.front()][0]];
+      closed_components.push_back(c);
+    }
   }
+  turn_cavities(vertices, triangles, closed_components, closed_triangles);
   return bad;
 }
 

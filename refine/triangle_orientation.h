@@ -1,7 +1,10 @@
 // Consistent orientation of a triangle set: triangles joined across an edge that exactly two
 // triangles share are oriented alike (the shared edge traversed in opposite directions) by a
 // breadth-first search; a component all of whose edges have two triangles (closed) is then
-// turned so that its signed volume is positive (counter-clockwise seen from outside). Any other
+// turned so that its signed volume is positive (counter-clockwise seen from outside), unless it
+// lies inside an odd number of the other closed components: it then bounds a cavity, whose side
+// is its outside, and faces into it (a hollow ball's inner sphere; a winding number of one of
+// its vertices, asked of the components whose box holds it). Any other
 // orientable component - an open sheet, or a closed surface that meets another one along a
 // non-manifold edge (two cubes sharing an edge, a box with an inner wall) - has no inside of its
 // own: it takes the orientation `prefer` votes for, if given. A non-orientable component keeps

@@ -103,6 +103,46 @@ TEST_CASE("orient_triangles: open and non-manifold sets, and a Moebius strip") {
   CHECK(refine::orient_triangles(v, strip) == 1);
 }
 
+TEST_CASE("orient_triangles: nested closed surfaces - a cavity faces into itself, a solid in it outward") {
+  // Three concentric cubes (sizes 3, 2, 1, centred alike) and a fourth beside them: the middle
+  // one bounds the cavity of the outer, the inner is a solid in that cavity, the fourth its own
+  // solid. Signed volume by nesting depth: +, -, +, +.
+  io::SurfaceMesh mesh;
+  const auto add = [&](double size, const Vec3& centre) {
+    const io::TriangleSoup c = io::make_cube(2, size);
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (const Vec3& v : c.vertices) mesh.vertices.push_back(v - Vec3::Constant(size / 2) + centre);
+    for (const auto& t : c.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  };
+  add(3, Vec3::Zero());
+  add(2, Vec3::Zero());
+  add(1, Vec3::Zero());
+  add(1, Vec3(5, 0, 0));
+  const std::size_t per_cube = mesh.triangles.size() / 4;
+  const auto volume_of = [&](std::size_t cube) {
+    Triangles part(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(cube * per_cube),
+                   mesh.triangles.begin() + static_cast<std::ptrdiff_t>((cube + 1) * per_cube));
+    return signed_volume(mesh.vertices, part);
+  };
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    CAPTURE(seed);
+    flip_some(mesh.triangles, seed);
+    CHECK(refine::orient_triangles(mesh.vertices, mesh.triangles) == 0);
+    CHECK(edges_used_twice_the_same_way(mesh.triangles) == 0);
+    CHECK(volume_of(0) == doctest::Approx(27));
+    CHECK(volume_of(1) == doctest::Approx(-8));
+    CHECK(volume_of(2) == doctest::Approx(1));
+    CHECK(volume_of(3) == doctest::Approx(1));
+    CHECK(test::orientation_problems(mesh).empty());
+  }
+  // The tests' checker, independently: the cavity turned outward is reported.
+  io::SurfaceMesh wrong = mesh;
+  for (std::size_t t = per_cube; t < 2 * per_cube; ++t) std::swap(wrong.triangles[t][1], wrong.triangles[t][2]);
+  const auto problems = test::orientation_problems(wrong);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].find("bounds a cavity") != std::string::npos);
+}
+
 TEST_CASE("the tests' own orientation check reports a flipped triangle and an inward closed surface") {
   io::SurfaceMesh cube = io::surface_mesh_from(io::make_cube(3));
   CHECK(refine::orient_triangles(cube.vertices, cube.triangles) == 0);

@@ -58,10 +58,54 @@ std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::
     volume[r] += mesh.vertices[v[0]].dot(mesh.vertices[v[1]].cross(mesh.vertices[v[2]]));
     if (open[t]) closed[r] = 0;
   }
+  // A closed component inside an odd number of others bounds a cavity and faces into it
+  // (negative volume): the parity of a ray's crossings from one of its vertices with the other
+  // closed components (a ray cast, not the library's winding numbers), among those whose box
+  // holds that vertex.
+  std::vector<std::uint32_t> closed_roots;
   for (std::uint32_t t = 0; t < n; ++t)
-    if (root(t) == t && closed[t] && !(volume[t] > 0))
-      problem("the closed component of triangle " + std::to_string(t) + " faces inward (signed volume " +
-              std::to_string(volume[t] / 6) + ")");
+    if (root(t) == t && closed[t]) closed_roots.push_back(t);
+  std::vector<std::vector<std::uint32_t>> members(closed_roots.size());
+  std::vector<kernel::Box3> boxes(closed_roots.size());
+  for (std::uint32_t t = 0; t < n; ++t) {
+    const auto it = std::lower_bound(closed_roots.begin(), closed_roots.end(), root(t));
+    if (it == closed_roots.end() || *it != root(t)) continue;
+    const auto c = static_cast<std::size_t>(it - closed_roots.begin());
+    members[c].push_back(t);
+    for (const std::uint32_t v : mesh.triangles[t]) boxes[c].extend(mesh.vertices[v]);
+  }
+  const Vec3 direction = Vec3(0.5773, 0.5779, 0.5768).normalized();
+  const auto crossings = [&](const Vec3& p, const std::vector<std::uint32_t>& ts) {
+    int count = 0;
+    for (const std::uint32_t t : ts) {  // Moller and Trumbore, in doubles: a test's estimate
+      const Vec3 &a = mesh.vertices[mesh.triangles[t][0]], &b = mesh.vertices[mesh.triangles[t][1]],
+                 &c = mesh.vertices[mesh.triangles[t][2]];
+      const Vec3 e1 = b - a, e2 = c - a, h = direction.cross(e2);
+      const double det = e1.dot(h);
+      if (det == 0) continue;
+      const Vec3 s = p - a;
+      const double u = s.dot(h) / det;
+      if (u < 0 || u > 1) continue;
+      const Vec3 q = s.cross(e1);
+      const double w = direction.dot(q) / det;
+      if (w < 0 || u + w > 1) continue;
+      count += e2.dot(q) / det > 0;
+    }
+    return count;
+  };
+  for (std::size_t i = 0; i < closed_roots.size(); ++i) {
+    const Vec3& p = mesh.vertices[mesh.triangles[closed_roots[i]][0]];
+    int depth = 0;
+    for (std::size_t j = 0; j < closed_roots.size(); ++j)
+      if (j != i && boxes[j].contains(p)) depth += crossings(p, members[j]) % 2;
+    const double v = volume[closed_roots[i]];
+    if (depth % 2 == 0 && !(v > 0))
+      problem("the closed component of triangle " + std::to_string(closed_roots[i]) + " faces inward (signed volume " +
+              std::to_string(v / 6) + ")");
+    if (depth % 2 == 1 && !(v < 0))
+      problem("the closed component of triangle " + std::to_string(closed_roots[i]) +
+              " bounds a cavity but faces away from it (signed volume " + std::to_string(v / 6) + ")");
+  }
   return problems;
 }
 

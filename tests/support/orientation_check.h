@@ -1,7 +1,9 @@
 // What Mesher::output() promises about orientation (refine/mesher.h), checked on a mesh
 // independently of refine/triangle_orientation.h: two triangles sharing an edge that no third
 // triangle uses traverse it in opposite directions, and each closed component (every edge in
-// exactly two triangles) encloses a positive volume, i.e. faces outward. Meant for outputs of
+// exactly two triangles) encloses a positive volume, i.e. faces outward - unless it lies inside
+// an odd number of other closed components (a ray's crossings), where it bounds a cavity and
+// faces into it (a negative volume). Meant for outputs of
 // orientable inputs (a non-orientable sheet cannot pass). Cost O(T log T).
 #pragma once
 
