@@ -26,6 +26,7 @@ struct FeaturesOptions {
 int run(const FeaturesOptions& o, const GlobalOptions& g) {
   if (!o.output.empty() && !io::mesh_format_from_path(o.output))
     throw Failure{kBadInput, "-o " + o.output + ": unknown output format (use .vtu, .mesh, .off, .obj, .ply or .stl)"};
+  if (!o.output.empty()) check_output_path(o.output, "-o");  // before the work, as mesh does
   if (!o.preview.empty()) check_preview_path(o.preview);
   const io::ReadResult model = load_model(o.input, g);
   const auto t0 = std::chrono::steady_clock::now();
@@ -79,7 +80,8 @@ Runner register_features(CLI::App& app) {
   add_model_input(app, o->input);
   add_feature_angles(app, o->angle, o->corner_angle);
   app.add_option("-o,--output", o->output,
-                 "Write the complex (patches and curves labelled): .vtu for ParaView, .mesh (Medit)");
+                 "Write the complex (patches and curves labelled): .vtu for ParaView, .mesh (Medit), or .off, .obj, .ply, "
+                 ".stl (triangles only)");
   app.add_option("--preview", o->preview,
                  "Draw the complex to an SVG picture: patches coloured and shaded, curves and corners dark");
   app.footer(

@@ -14,6 +14,7 @@
 #include "input_defects.h"
 #include "command.h"
 #include "model_input.h"
+#include "output_paths.h"
 #include "size_limits.h"
 #include "size_option.h"
 #include "time_limit.h"
@@ -109,6 +110,9 @@ int run(const ProtectCommandOptions& o, const GlobalOptions& g) {
   const TimeLimit time_limit(o.max_seconds);
   if (!o.vtu_path.empty() && !ends_with_vtu(o.vtu_path))
     throw Failure{kBadInput, "-o " + o.vtu_path + ": the balls are written as .vtu (ParaView)"};
+  // Before the work, as mesh does: a missing directory fails at once, not after Protect.
+  if (!o.vtu_path.empty()) check_output_path(o.vtu_path, "-o");
+  if (!o.balls_path.empty()) check_output_path(o.balls_path, "--balls");
   const io::ReadResult model = load_model(o.input, g, &time_limit);
   protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
   reject_self_intersections(complex, o.input, &time_limit);

@@ -30,6 +30,9 @@ expect 0 "" -- features "$TMP/cube.off" --preview "$TMP/cube.svg"
 grep -q "8 corners, 12 curves, 6 patches" "$TMP/cube.svg" || fail "preview title lacks the counts"
 expect 2 "SVG" -- features "$TMP/cube.off" --preview "$TMP/cube.png"
 expect 2 "no such directory" -- features "$TMP/cube.off" --preview "$TMP/no-such-dir/cube.svg"
+# -o too is checked before the work, and nothing is printed for a run that cannot write.
+expect 2 "-o $TMP/no-such-dir/f.vtu: no such directory" -- features "$TMP/cube.off" -o "$TMP/no-such-dir/f.vtu"
+[[ ! -s "$TMP/out" ]] || fail "features with an unwritable -o printed figures: $(head -c 200 "$TMP/out")"
 # A flat cap: triangle 1 (0, 2, 4) rises 1e-7 above the sheet's diagonal (angles of 1.4e-7 rad at
 # its ends). Healed, the sheet stays one flat patch with its 4 boundary curves, and the command
 # says so on stderr (not under -q); kept, it would stand upright with three sharp edges.

@@ -86,7 +86,7 @@ done
 expect 2 "" -- protect "$TMP/cube.off"
 expect 2 "" -- protect "$TMP/cube.off" --size 1% --angle 200
 expect 2 ".vtu" -- protect "$TMP/cube.off" --size 1% -o "$TMP/balls.txt"
-expect 2 "cannot open for writing" -- protect "$TMP/cube.off" --size 1% --balls "$TMP/no/such/dir/balls.txt"
+expect 2 "--balls $TMP/no/such/dir/balls.txt: no such directory" -- protect "$TMP/cube.off" --size 1% --balls "$TMP/no/such/dir/balls.txt"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- protect "$TMP/crossing.off" --size 1%
 # A size the job could never finish at is refused at once, not after minutes at a cap.
@@ -107,4 +107,7 @@ expect 0 "" -- protect "$TMP/far.off" --size 0.1 --balls "$TMP/far-balls.txt" -o
 [[ "$(value valid)" == "true" && "$(value corner_balls)" == "8" ]] || fail "far cube: valid=$(value valid) corner_balls=$(value corner_balls)"
 in_far_cube "$TMP/far-balls.txt" && in_far_cube "$TMP/far-balls.vtu" || fail "far cube: ball centres not in the model's frame"
 grep -q "^corner 6 1000000001 2000000001 -2999999999 " "$TMP/far-balls.txt" || fail "far cube: corner 6 not at its vertex"
+# Output paths are checked before Protect, as mesh checks its own: no figures, no file.
+expect 2 "-o $TMP/no-such-dir/b.vtu: no such directory" -- protect "$TMP/cube.off" --size 5% -o "$TMP/no-such-dir/b.vtu"
+[[ ! -s "$TMP/out" ]] || fail "protect with an unwritable -o printed figures: $(head -c 200 "$TMP/out")"
 finish
