@@ -24,13 +24,24 @@ Engine::Engine(BallSet& b, const ProtectOptions& l, ProtectStats& s)
       first_new_id_(static_cast<BallId>(b.id_bound())),
       min_radius_(l.min_radius_fraction * b.diagonal()) {}
 
+namespace {
+
+double total_curve_length(const Complex& complex) {
+  double length = 0;
+  for (const Curve& c : complex.curves) length += c.length;
+  return length;
+}
+
+}  // namespace
+
 void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) const {
   char message[520];
   if (balls.size() >= options.max_balls)
     std::snprintf(message, sizeof message,
-                  "protection stopped: more than %zu balls (the cap), the last at (%.6g, %.6g, %.6g); curves "
-                  "closer together, or meeting at smaller angles, than the size asked for can resolve?",
-                  options.max_balls, where.x(), where.y(), where.z());
+                  "protection stopped: more than %zu balls (the cap), the last at (%.6g, %.6g, %.6g); a size too "
+                  "small for the curves (%.3g long in all, and Protect places a few balls per length of the size), or "
+                  "curves closer together, or meeting at smaller angles, than the size asked for can resolve?",
+                  options.max_balls, where.x(), where.y(), where.z(), total_curve_length(complex));
   else {
     // The nearest other curve (the ball's own does not count; any, for a corner ball).
     const std::uint32_t own[] = {curve};

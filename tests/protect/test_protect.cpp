@@ -254,6 +254,14 @@ TEST_CASE("protect: safety caps end in a ProtectionError, bad arguments in inval
   } catch (const protect::ProtectionError& e) {
     CHECK(std::string(e.what()).find("50 balls") != std::string::npos);
   }
+  // A cube's curves alone (12 long in all) need more balls than the cap at a small size: the
+  // message gives the curves' length beside the close-curves question.
+  try {
+    protect::protect(protect::build_complex(io::make_cube(2)), 0.01, few);
+    FAIL("no error at the ball cap");
+  } catch (const protect::ProtectionError& e) {
+    CHECK(std::string(e.what()).find("a size too small for the curves (12 long in all") != std::string::npos);
+  }
 
   for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     CHECK_THROWS_AS(protect::protect(wedge, bad), std::invalid_argument);
