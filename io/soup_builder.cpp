@@ -291,12 +291,15 @@ ReadResult SoupBuilder::finish() {
     for (const Vec3& p : soup_.vertices) box.extend(p);
     const double extent = (box.hi - box.lo).cwiseAbs().maxCoeff();
     if (!(largest_flushed_ <= 0x1p-40 * extent)) {
+      // The extent is taken after the flush: a model all of whose coordinates are that small is
+      // then 0 across, which the message must not print as its size.
+      char size[64] = ", and none of the model's is larger";
+      if (extent > 0) std::snprintf(size, sizeof size, ", on a model only %.3g across", extent);
       char text[320];
       std::snprintf(text, sizeof text,
                     "%zu coordinate(s) smaller than 2^-140 (about 7e-43) in magnitude, the range of the exact "
-                    "predicates, up to %.3g, on a model only %.3g across: setting them to 0 would change its "
-                    "shape; scale the model up",
-                    flushed_to_zero_, largest_flushed_, extent);
+                    "predicates, up to %.3g%s: setting them to 0 would change its shape; scale the model up",
+                    flushed_to_zero_, largest_flushed_, size);
       fail("", text);
     }
   }

@@ -200,6 +200,14 @@ TEST_CASE("OFF: coordinates below the predicates' range are set to 0, with a war
   });
   CHECK(error.find("2 coordinate(s) smaller than 2^-140") != std::string::npos);
   CHECK(error.find("would change its shape; scale the model up") != std::string::npos);
+  CHECK(error.find("on a model only 1e-40 across") != std::string::npos);
+  // Every coordinate that small: no size of the model to print (it would read "0 across").
+  const std::string all_tiny = io_error_of([] {
+    io::read_model_from_memory("OFF\n3 1 0\n0 0 0\n1e-45 0 0\n0 1e-45 0\n3 0 1 2\n", io::ModelFormat::off, "t.off");
+  });
+  CHECK(all_tiny.find("up to 1e-45, and none of the model's is larger: setting them to 0 would change its shape") !=
+        std::string::npos);
+  CHECK(all_tiny.find("0 across") == std::string::npos);
 }
 
 namespace {
