@@ -13,8 +13,9 @@ namespace delpsc::refine {
 
 namespace {
 
-/// A closed orientable component: its triangles closed_triangles[first, end), its box, and one
-/// of its vertices.
+/// A closed orientable component: its triangles closed_triangles[first, end), its box, and a
+/// point on it (a triangle's centroid: two components may share a vertex, never a triangle's
+/// interior, so the point lies off every other component).
 struct ClosedComponent {
   std::size_t first = 0, end = 0;
   kernel::Box3 box;
@@ -23,7 +24,7 @@ struct ClosedComponent {
 
 /// The winding number of the closed triangle set `ts` (outward) around p: the sum of the solid
 /// angles its triangles subtend at p over 4π (Van Oosterom and Strackee's formula), near 1
-/// inside and 0 outside. p lies off the set (components are disjoint). O(|ts|).
+/// inside and 0 outside. p lies off the set. O(|ts|).
 double winding_number(const Vec3& p, std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
                       std::span<const std::uint32_t> ts) {
   double sum = 0;
@@ -40,8 +41,10 @@ double winding_number(const Vec3& p, std::span<const Vec3> vertices, std::span<c
 /// Each closed component was turned to a positive volume, outward as if it bounded a solid of
 /// its own. One inside an odd number of others bounds a cavity of the solid they make (a
 /// hollow ball's inner sphere), whose outside is the cavity: it is turned to face into it. The
-/// components are disjoint, so whether one lies inside another is the winding number of any of
-/// its vertices; only the components whose box holds that vertex are asked.
+/// components meet at most at vertices, so whether one lies inside another is the winding number
+/// of a point inside one of its triangles; only the components whose box holds that point are
+/// asked. Cost: the triangles of every component whose box holds another's point, once per such
+/// point (quadratic only for many components inside one large one, left as is).
 void turn_cavities(std::span<const Vec3> vertices, std::span<std::array<std::uint32_t, 3>> triangles,
                    const std::vector<ClosedComponent>& components, const kernel::LargeVector<std::uint32_t>& members) {
   if (components.size() < 2) return;
@@ -186,7 +189,8 @@ std::size_t orient_triangles(std::span<const Vec3> vertices, std::span<std::arra
       c.end = closed_triangles.size();
       for (const std::uint32_t t : component)
         for (const std::uint32_t v : triangles[t]) c.box.extend(vertices[v]);
-      c.probe = vertices[triangles[component.front()][0]];
+      const auto& seed = triangles[component.front()];
+      c.probe = (vertices[seed[0]] + vertices[seed[1]] + vertices[seed[2]]) / 3;
       closed_components.push_back(c);
     }
   }

@@ -3,14 +3,16 @@
 // breadth-first search; a component all of whose edges have two triangles (closed) is then
 // turned so that its signed volume is positive (counter-clockwise seen from outside), unless it
 // lies inside an odd number of the other closed components: it then bounds a cavity, whose side
-// is its outside, and faces into it (a hollow ball's inner sphere; a winding number of one of
-// its vertices, asked of the components whose box holds it). Any other
+// is its outside, and faces into it (a hollow ball's inner sphere; the winding number at
+// a point inside one of its triangles, asked of the components whose box holds it). Any other
 // orientable component - an open sheet, or a closed surface that meets another one along a
 // non-manifold edge (two cubes sharing an edge, a box with an inner wall) - has no inside of its
 // own: it takes the orientation `prefer` votes for, if given. A non-orientable component keeps
 // the orientation the search gave it. O(T + V) memory; time O(T + V) plus a sort of each
 // vertex's edges by their other end (O(d log d) for d triangles around the vertex), plus at most
-// kOrientationVotes calls of `prefer` per open component.
+// kOrientationVotes calls of `prefer` per open component, plus, for each closed component whose
+// box holds another's test point, its triangles once per such point (nothing for one closed
+// component or disjoint boxes; quadratic only for many components inside one large one).
 #pragma once
 
 #include <array>

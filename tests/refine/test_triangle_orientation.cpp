@@ -143,6 +143,34 @@ TEST_CASE("orient_triangles: nested closed surfaces - a cavity faces into itself
   CHECK(problems[0].find("bounds a cavity") != std::string::npos);
 }
 
+TEST_CASE("orient_triangles: a cavity touching its container at a vertex still faces into itself") {
+  // The cube [0, 3]^3 and, inside it, a tetrahedron with one corner at the cube's corner at the
+  // origin (the same vertex) and the others strictly inside: the two meet at that vertex only.
+  // The tetrahedron's first triangle starts there: a test point at that vertex would lie on the
+  // cube (winding number 1/8) and the cavity would be missed.
+  io::SurfaceMesh mesh;
+  const io::TriangleSoup outer = io::make_cube(2, 3);
+  mesh.vertices.assign(outer.vertices.begin(), outer.vertices.end());
+  mesh.triangles.assign(outer.triangles.begin(), outer.triangles.end());
+  const auto shared =
+      static_cast<std::uint32_t>(std::find(mesh.vertices.begin(), mesh.vertices.end(), Vec3::Zero()) - mesh.vertices.begin());
+  REQUIRE(shared < mesh.vertices.size());
+  const auto a = static_cast<std::uint32_t>(mesh.vertices.size());
+  mesh.vertices.push_back(Vec3(0.5, 0.5, 0.2));
+  mesh.vertices.push_back(Vec3(0.5, 0.2, 0.5));
+  mesh.vertices.push_back(Vec3(0.2, 0.5, 0.5));
+  const std::size_t outer_count = mesh.triangles.size();
+  for (const std::array<std::uint32_t, 3>& t : {std::array<std::uint32_t, 3>{shared, a, a + 1},
+                                                {shared, a + 1, a + 2}, {shared, a + 2, a}, {a, a + 2, a + 1}})
+    mesh.triangles.push_back(t);
+  CHECK(refine::orient_triangles(mesh.vertices, mesh.triangles) == 0);
+  const Triangles outer_part(mesh.triangles.begin(), mesh.triangles.begin() + static_cast<std::ptrdiff_t>(outer_count));
+  const Triangles inner_part(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(outer_count), mesh.triangles.end());
+  CHECK(signed_volume(mesh.vertices, outer_part) == doctest::Approx(27));
+  CHECK(signed_volume(mesh.vertices, inner_part) == doctest::Approx(-0.018));
+  CHECK(test::orientation_problems(mesh).empty());
+}
+
 TEST_CASE("the tests' own orientation check reports a flipped triangle and an inward closed surface") {
   io::SurfaceMesh cube = io::surface_mesh_from(io::make_cube(3));
   CHECK(refine::orient_triangles(cube.vertices, cube.triangles) == 0);

@@ -59,9 +59,9 @@ std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::
     if (open[t]) closed[r] = 0;
   }
   // A closed component inside an odd number of others bounds a cavity and faces into it
-  // (negative volume): the parity of a ray's crossings from one of its vertices with the other
-  // closed components (a ray cast, not the library's winding numbers), among those whose box
-  // holds that vertex.
+  // (negative volume): the parity of a ray's crossings, from a point inside one of its
+  // triangles, with the other closed components (a ray cast, not the library's winding
+  // numbers), among those whose box holds that point.
   std::vector<std::uint32_t> closed_roots;
   for (std::uint32_t t = 0; t < n; ++t)
     if (root(t) == t && closed[t]) closed_roots.push_back(t);
@@ -94,7 +94,9 @@ std::vector<std::string> orientation_problems(const io::SurfaceMesh& mesh, std::
     return count;
   };
   for (std::size_t i = 0; i < closed_roots.size(); ++i) {
-    const Vec3& p = mesh.vertices[mesh.triangles[closed_roots[i]][0]];
+    // A triangle's centroid: components may share a vertex, which would lie on the other one.
+    const auto& seed = mesh.triangles[closed_roots[i]];
+    const Vec3 p = (mesh.vertices[seed[0]] + mesh.vertices[seed[1]] + mesh.vertices[seed[2]]) / 3;
     int depth = 0;
     for (std::size_t j = 0; j < closed_roots.size(); ++j)
       if (j != i && boxes[j].contains(p)) depth += crossings(p, members[j]) % 2;
