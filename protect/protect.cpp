@@ -53,7 +53,7 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
                   "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there%s?",
                   radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size(), gap);
   }
-  throw ProtectionError(message, where);
+  throw ProtectionError(message, where, balls.size() >= options.max_balls);
 }
 
 void Engine::poll_stop() {

@@ -95,14 +95,18 @@ namespace delpsc::protect {
 
 /// Thrown when a safety cap of ProtectOptions is reached; what() says which and how far it got,
 /// where() the centre of the ball that would have passed it (where the model needs balls that
-/// small, for a caller that wants to say why).
+/// small, for a caller that wants to say why), too_many_balls() whether it was max_balls (else
+/// the radius floor) - a caller that set max_balls from its own limit may say so.
 class ProtectionError : public std::runtime_error {
  public:
-  ProtectionError(const std::string& message, const Vec3& where) : std::runtime_error(message), where_(where) {}
+  ProtectionError(const std::string& message, const Vec3& where, bool too_many_balls = false)
+      : std::runtime_error(message), where_(where), too_many_balls_(too_many_balls) {}
   const Vec3& where() const { return where_; }
+  bool too_many_balls() const { return too_many_balls_; }
 
  private:
   Vec3 where_;
+  bool too_many_balls_;
 };
 
 /// Thrown when ProtectOptions::stop asked protect() to stop; what() says how many balls it had.

@@ -276,10 +276,21 @@ expect 0 "" -- mesh "$TMP/cube.off" --size 5% -o "$TMP/plain.off"
 grep -q "warning:" "$TMP/err" && fail "cube 5%: warned: $(head -c 300 "$TMP/err")"
 (( $(value vertices) <= 2 * $(value vertices_expected) )) || fail "cube 5%: vertices=$(value vertices) vertices_expected=$(value vertices_expected)"
 
-# More protecting balls than --max-vertices: the run stops before inserting any (inserting them
-# alone took fandisk at 0.01% over a minute and 4 GB under a cap of 50); exit 1, empty mesh.
-expect 1 "before refining: the protecting balls alone number" -- mesh "$TMP/cube.off" --size 0.1% --max-vertices 50 -o "$TMP/balls_only.off"
-[[ "$(value vertices)" == "0" ]] || fail "balls over the cap: vertices=$(value vertices)"
+# More protecting balls than --max-vertices: every ball centre is a vertex, so Protect itself
+# stops at the cap (inserting the balls alone took fandisk at 0.01% over a minute and 4 GB under
+# a cap of 50; a box 1e-6 thick, whose curves need 8 million balls, took 18 s and 2.2 GB to reach
+# Protect's own cap); exit 1, nothing written, as when --max-seconds ends Protect.
+rm -f "$TMP/balls_only.off"
+expect 1 "protection stopped at --max-vertices 50: the protecting balls alone would be more vertices" \
+  -- mesh "$TMP/cube.off" --size 0.1% --max-vertices 50 -o "$TMP/balls_only.off"
+[[ ! -e "$TMP/balls_only.off" ]] || fail "balls over the cap: a mesh was written"
+printf 'OFF\n8 6 0\n0 0 0\n0 0 1\n0 1e-6 0\n0 1e-6 1\n1 0 0\n1 0 1\n1 1e-6 0\n1 1e-6 1\n4 0 1 3 2\n4 4 6 7 5\n4 0 4 5 1\n4 2 3 7 6\n4 0 2 6 4\n4 1 5 7 3\n' >"$TMP/thin_box.off"
+expect 1 "protection stopped at --max-vertices 1000" -- mesh "$TMP/thin_box.off" --max-vertices 1000 -o "$TMP/thin_box_out.off"
+# Without --max-vertices the automatic cap (two million here) ends it, as bad input: the size
+# cannot resolve curves a millionth apart.
+expect 2 "the balls would be more than the automatic vertex cap allows" -- mesh "$TMP/thin_box.off" -q -o "$TMP/thin_box_out.off"
+grep -q "more than 2000000 balls" "$TMP/err" || fail "thin box: the cap is not named: $(head -c 300 "$TMP/err")"
+[[ ! -e "$TMP/thin_box_out.off" ]] || fail "thin box: a mesh was written"
 # NaN and negative counts are refused as usage errors (NaN passed the ranges and ended as an
 # internal error; a negative cap wrapped to 'no limit').
 expect 2 "NaN" -- mesh "$TMP/cube.off" --facet-angle nan -o "$TMP/nan.off"

@@ -253,6 +253,13 @@ TEST_CASE("protect: safety caps end in a ProtectionError, bad arguments in inval
     FAIL("no error at the ball cap");
   } catch (const protect::ProtectionError& e) {
     CHECK(std::string(e.what()).find("50 balls") != std::string::npos);
+    CHECK(e.too_many_balls());  // the ball count, which a caller's own limit may have set
+  }
+  try {
+    protect::protect(wedge, 0.05, coarse);
+    FAIL("no error at the radius floor");
+  } catch (const protect::ProtectionError& e) {
+    CHECK_FALSE(e.too_many_balls());
   }
   // A cube's curves alone (12 long in all) need more balls than the cap at a small size: the
   // message gives the curves' length beside the close-curves question.
