@@ -426,8 +426,37 @@ bool Mesher::refine_around(PointId p) {
       return true;
     }
   }
+  // C3 (§2.1) broken at p: its centre, a point of its curve segment, inside a larger ball that
+  // is not adjacent to it. Lemma 2.3 gives C3 from C3.a and C3.b only once the balls are small
+  // next to the curve's shape; a curve folding back within a ball radius of itself (a sheet bent
+  // into a hairpin, its boundary coming back 1/400 of the diagonal away) breaks it at coarse
+  // sizes. The larger ball is the one too large there: refining p instead left it under that
+  // ball at every scale, down to the balls' floor.
+  if (own_ball_only)
+    if (const BallKey over = larger_ball_over(p); over != kNoBallKey) big = over;
   refine_ball(big);
   return true;
+}
+
+BallKey Mesher::larger_ball_over(PointId p) const {
+  const BallKey own = places_[p].ball;
+  const ProtectingBall mine = balls_->ball(own);
+  BallKey over = kNoBallKey;
+  double largest = mine.radius;
+  std::vector<CellId> star;
+  dt_.incident_cells(p, star);
+  for (const CellId c : star)
+    for (int i = 0; i < 4; ++i) {
+      const PointId q = dt_.vertex(c, i);
+      if (q == delaunay::kInfiniteVertex || q == p || places_[q].kind != VertexPlace::Kind::ball) continue;
+      const ProtectingBall other = balls_->ball(places_[q].ball);
+      if (other.radius <= largest || (other.centre - mine.centre).squaredNorm() >= other.radius * other.radius ||
+          balls_->adjacent(own, places_[q].ball))
+        continue;
+      largest = other.radius;
+      over = places_[q].ball;
+    }
+  return over;
 }
 
 // Step 2(a) inserts x for a D3/D4 failure, and the termination proof (Theorem 3.1) bounds x's

@@ -225,6 +225,9 @@ class Mesher {
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  // For a ball vertex p: the largest ball among p's neighbours in the triangulation that holds
+  // p's centre and is not adjacent to p (C3 broken, see refine_around); kNoBallKey if none.
+  BallKey larger_ball_over(PointId p) const;
   // For a D3/D4 facet: a ball vertex off the facet's patch that the facet's point is within
   // √2 radii of (size(t, σ) < radius), the largest such; kNoBallKey if none.
   BallKey ball_reaching_patch(const RestrictedFacet& r) const;

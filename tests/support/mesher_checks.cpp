@@ -16,7 +16,7 @@ namespace {
 constexpr std::size_t kBruteForceRegularityPoints = 1500;
 }  // namespace
 
-void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls) {
+void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls, bool require_c3) {
   mesher.run();
   INFO("message: " << mesher.stats().message);
   CHECK_FALSE(mesher.stats().stuck);
@@ -41,7 +41,7 @@ void run_mesher_and_check(refine::Mesher& mesher, const protect::BallSet* balls)
   if (balls != nullptr) {
     const protect::BallCheck check = protect::check_balls(*balls);
     CHECK_MESSAGE(check.ok(), test::problem_lines(check.problems));
-    CHECK(check.c3 == 0);  // which ok() leaves out (ball_checker.h); Lemma 2.1 rests on it
+    if (require_c3) CHECK(check.c3 == 0);  // which ok() leaves out (ball_checker.h); Lemma 2.1 rests on it
   }
 }
 
