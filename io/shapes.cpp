@@ -252,6 +252,21 @@ TriangleSoup make_sphere(int n) {
   return s;
 }
 
+TriangleSoup make_touching_spheres(int n) {
+  require(n >= 2 && n % 2 == 0, "make_touching_spheres: n must be even and >= 2");
+  TriangleSoup s = make_sphere(n);
+  const auto first = static_cast<std::uint32_t>(s.vertices.size());
+  const std::size_t triangles = s.triangles.size();
+  // 2 - z is exact at z = 1 (the face centre (0, 0, 1) normalises to itself): the two poles are
+  // the same point, which the soup's weld makes one vertex.
+  for (std::uint32_t i = 0; i < first; ++i) s.vertices.emplace_back(s.vertices[i].x(), s.vertices[i].y(), 2 - s.vertices[i].z());
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const auto& v = s.triangles[t];
+    s.triangles.push_back({v[0] + first, v[2] + first, v[1] + first});
+  }
+  return s;
+}
+
 TriangleSoup make_box_with_fin(int n) {
   require(n >= 1, "make_box_with_fin: n must be >= 1");
   n = (n + 3) / 4 * 4;

@@ -65,6 +65,12 @@ TriangleSoup make_torus(double R = 1, double r = 0.3, int nu = 32, int nv = 16);
 /// 0 / 0 / 1, Euler characteristic 2, no boundary.
 TriangleSoup make_sphere(int n = 8);
 
+/// Two unit spheres (make_sphere(n), n even, >= 2) touching at (0, 0, 1), a vertex of both: the
+/// second is the first mirrored in the plane z = 1 (triangles turned to face outward). Tangent
+/// sheets meeting only at a point, a corner with no curve (protect::kCornerSheets).
+/// 1 / 0 / 2, one component, Euler characteristic 3, no boundary.
+TriangleSoup make_touching_spheres(int n = 8);
+
 /// The box [0,2] x [0,1] x [0,1] with an internal fin: the rectangle x = 1, 0 <= y <= 1/2,
 /// 1/4 <= z <= 3/4 attached to the bottom face y = 0 along one segment (a non-manifold curve,
 /// the bottom patch on both of its sides: a slit). Cells per unit length n (rounded up to a

@@ -46,17 +46,18 @@ void DiskCondition::patches_of(PointId p, std::vector<std::pair<std::uint32_t, b
     }
     return;
   }
-  // A corner is interior to σ only when every curve through it that bounds σ has σ on both
-  // sides (the end of a slit); otherwise it is on σ's boundary.
+  // A corner is interior to σ when every curve through it that bounds σ has σ on both sides
+  // (the end of a slit), or when none does: a corner where separate sheets touch at a vertex
+  // and no curve passes (protect::kCornerSheets, two spheres touching) lies inside each sheet,
+  // whose umbrella there is a full disk. Otherwise it is on σ's boundary. (Taking such a corner
+  // for a boundary point made D2 fail at every scale: the ball halved to the balls' floor.)
   for (const std::uint32_t s : domain_->corner_patches(v.corner)) {
-    bool interior = true, bounded = false;
+    bool interior = true;
     for (const std::uint32_t c : domain_->corner_curves(v.corner)) {
       const std::size_t k = count_of(domain_->curve_patches(c), s);
-      if (k == 0) continue;
-      bounded = true;
-      interior &= k >= 2;
+      if (k != 0) interior &= k >= 2;
     }
-    out.emplace_back(s, bounded && interior);
+    out.emplace_back(s, interior);
   }
 }
 

@@ -207,12 +207,20 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
       }
     }
   }
+  // (vertex, the domain corner it is at), sorted: a corner vertex lies on every patch of its
+  // corner, which its closest point names only one of (two spheres touching at a corner).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at_corner;
   for (const std::uint32_t v : mesh.corners) {
     double nearest = HUGE_VAL;
+    std::uint32_t which = 0;
     for (std::uint32_t k = 0; k < domain.corner_count(); ++k)
-      nearest = std::min(nearest, (domain.corner_point(k) - mesh.vertices[v]).norm());
-    if (!(nearest <= tolerance)) general("corner vertex " + std::to_string(v) + " is at no corner of the domain");
+      if (const double d = (domain.corner_point(k) - mesh.vertices[v]).norm(); d < nearest) nearest = d, which = k;
+    if (!(nearest <= tolerance))
+      general("corner vertex " + std::to_string(v) + " is at no corner of the domain");
+    else
+      at_corner.emplace_back(v, which);
   }
+  std::sort(at_corner.begin(), at_corner.end());
   Array<std::uint32_t> on_curve;  // vertices of feature edges, sorted
   for (const auto& e : mesh.edges) on_curve.push_back(e[0]), on_curve.push_back(e[1]);
   std::sort(on_curve.begin(), on_curve.end());
@@ -276,8 +284,16 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
       const auto close = domain.closest_point(mesh.vertices[v], near_squared);
       if (!close || close->squared_distance > tolerance * tolerance)
         problem(sigma, "vertex " + std::to_string(v) + " is off the domain");
-      else if (!std::binary_search(on_curve.begin(), on_curve.end(), v) && close->patch != sigma)
+      else if (std::binary_search(on_curve.begin(), on_curve.end(), v))
+        continue;
+      else if (const auto k = std::lower_bound(at_corner.begin(), at_corner.end(), std::pair{v, std::uint32_t{0}});
+               k != at_corner.end() && k->first == v) {
+        const auto patches = domain.corner_patches(k->second);
+        if (std::find(patches.begin(), patches.end(), sigma) == patches.end())
+          problem(sigma, "vertex " + std::to_string(v) + " (corner " + std::to_string(k->second) + ") is not on it");
+      } else if (close->patch != sigma) {
         problem(sigma, "vertex " + std::to_string(v) + " lies on patch " + std::to_string(close->patch));
+      }
     }
     ps.euler = static_cast<int>(ps.vertices) - static_cast<int>(ps.edges) + static_cast<int>(ps.triangles);
     // The boundary must be the feature edges of the curves bounding σ once.

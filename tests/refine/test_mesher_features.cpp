@@ -397,6 +397,15 @@ TEST_CASE("a curve folding back within a ball radius of itself: the larger ball 
   CHECK(out.stats.ball_refinements > 0);
 }
 
+TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
+  // The contact point is a corner (protect::kCornerSheets) on both patches and on no curve, so
+  // inside each: its umbrella there must be a full disk. D2 took it for a boundary point and
+  // failed at every scale, halving the corner ball to the balls' floor (a ProtectionError).
+  const Outcome out = mesh_model(io::make_touching_spheres(8), 0.04);
+  CHECK(out.report.patches.size() == 2);
+  CHECK(out.vertices < 5000);
+}
+
 // Real CAD and scanned models from Debian's libcgal-demo, fetched by scripts/get-cgal-data.sh into
 // data/cgal-demo/ (absent: see tests/support/cgal_demo_data.h). G1 and the disk condition at 4% of the
 // diagonal; G2 per patch is not expected at that size (fandisk's thin patches are not resolved).

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 
 #include <delpsc/io/sample_part.h>
 #include <delpsc/io/shapes.h>
@@ -204,6 +205,36 @@ TEST_CASE("skeleton check: holes, pinched fans and vertices off the model are re
     CHECK(mentions(report, "lies on patch " + std::to_string(patch)));
     CHECK(mentions(report, "is not on a boundary curve"));
   }
+}
+
+TEST_CASE("skeleton check: a corner on no curve lies on each of its patches, and on no other") {
+  // Two spheres touching at a vertex, and a third apart: the contact vertex is a corner of the
+  // first two patches; its closest point names only one of them, which made the other's
+  // triangles around it "lie on" the wrong patch.
+  io::TriangleSoup soup = io::make_touching_spheres(4);
+  const io::TriangleSoup third = io::make_sphere(4);
+  const auto first = static_cast<std::uint32_t>(soup.vertices.size());
+  for (const Vec3& v : third.vertices) soup.vertices.push_back(v + Vec3(5, 0, 0));
+  for (const auto& t : third.triangles) soup.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  const refine::PolygonDomain domain(soup);
+  REQUIRE(domain.patch_count() == 3);
+  REQUIRE(domain.corner_count() == 1);
+  REQUIRE(domain.curve_count() == 0);
+  io::SurfaceMesh mesh = protect::to_surface_mesh(domain.complex());
+  REQUIRE(mesh.corners.size() == 1);
+  const refine::SkeletonReport good = refine::check_skeleton(mesh, domain, tolerance(domain));
+  CHECK_MESSAGE(good.ok(), (good.problems.empty() ? std::string() : good.problems.front()));
+  // A triangle of the third sphere moved onto the contact vertex: that patch does not hold it.
+  const std::uint32_t contact = mesh.corners[0];
+  const auto t = static_cast<std::size_t>(
+      std::find(mesh.triangle_patch.begin(), mesh.triangle_patch.end(), mesh.triangle_patch.back()) -
+      mesh.triangle_patch.begin());
+  mesh.triangles[t][0] = contact;
+  const refine::SkeletonReport bad = refine::check_skeleton(mesh, domain, tolerance(domain));
+  CHECK_FALSE(bad.ok());
+  bool named = false;
+  for (const std::string& p : bad.problems) named |= p.find("(corner 0) is not on it") != std::string::npos;
+  CHECK(named);
 }
 
 TEST_CASE("skeleton check: labels out of range, and curve or corner vertices off the complex") {
