@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -265,6 +267,26 @@ TriangleSoup make_touching_spheres(int n) {
     s.triangles.push_back({v[0] + first, v[2] + first, v[1] + first});
   }
   return s;
+}
+
+TriangleSoup make_hairpin_sheet(double gap, int segments) {
+  require(gap > 0 && segments >= 1, "make_hairpin_sheet: need gap > 0 and segments >= 1");
+  std::vector<std::pair<double, double>> profile{{0.0, 0.0}};  // (x, z)
+  for (int k = 0; k <= segments; ++k) {
+    const double a = std::numbers::pi * k / segments;
+    profile.emplace_back(1 + gap / 2 * std::sin(a), gap / 2 * (1 - std::cos(a)));
+  }
+  profile.emplace_back(0.0, gap);
+  TriangleSoup soup;
+  for (const auto& [x, z] : profile) {
+    soup.vertices.emplace_back(x, 0, z);
+    soup.vertices.emplace_back(x, 1, z);
+  }
+  for (std::uint32_t i = 0; i + 1 < profile.size(); ++i) {
+    soup.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    soup.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  return soup;
 }
 
 TriangleSoup make_box_with_fin(int n) {

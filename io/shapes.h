@@ -71,6 +71,13 @@ TriangleSoup make_sphere(int n = 8);
 /// 1 / 0 / 2, one component, Euler characteristic 3, no boundary.
 TriangleSoup make_touching_spheres(int n = 8);
 
+/// A unit square sheet folded back on itself: a layer at z = 0 for x in [0, 1], a half circle
+/// of radius gap / 2 in `segments` pieces (180 / segments degrees a turn: with 4 or more, no
+/// corner at the default 45), a layer at z = gap back to x = 0 (gap > 0, segments >= 1). Each
+/// of its two boundary curves comes back within `gap` of itself. 4 corners / 4 curves / 1 patch,
+/// a disk.
+TriangleSoup make_hairpin_sheet(double gap = 0.03, int segments = 4);
+
 /// The box [0,2] x [0,1] x [0,1] with an internal fin: the rectangle x = 1, 0 <= y <= 1/2,
 /// 1/4 <= z <= 3/4 attached to the bottom face y = 0 along one segment (a non-manifold curve,
 /// the bottom patch on both of its sides: a slit). Cells per unit length n (rounded up to a

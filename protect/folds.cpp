@@ -94,4 +94,23 @@ std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3
   return best;
 }
 
+std::optional<NearCurve> curve_returning_near(const Complex& complex, std::uint32_t c, double s) {
+  const Vec3 where = complex.point_at(c, s);
+  const auto polyline = complex.curve_polyline(c);
+  const auto arc = complex.curve_parameters(c);
+  const double length = complex.curves[c].length;
+  const bool closed = complex.curves[c].closed;
+  s = complex.wrap_parameter(c, s);
+  std::optional<NearCurve> best;
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
+    const auto near = kernel::closest_point_on_segment(where, complex.vertices[polyline[i]], complex.vertices[polyline[i + 1]]);
+    const double d = (near.point - where).norm();
+    const double at = arc[i] + near.t * (arc[i + 1] - arc[i]);
+    double along = std::abs(at - s);
+    if (closed) along = std::min(along, length - along);
+    if (d > 0 && along > 3 * d && (!best || d < best->distance)) best = NearCurve{c, d};
+  }
+  return best;
+}
+
 }  // namespace delpsc::protect

@@ -66,4 +66,11 @@ struct NearCurve {
 std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3& where,
                                               std::span<const std::uint32_t> excluded);
 
+/// Where curve c comes back near its own point at parameter s: the nearest point of c farther
+/// along the curve from s than 3 times its distance (a hairpin: a sheet folded over, its boundary
+/// returning close by), as {c, distance}; nullopt if none. The gap nearest_curve_except cannot
+/// see, since it leaves the ball's own curve out. Rounded arithmetic, a diagnostic. O(n) for n
+/// polyline vertices.
+std::optional<NearCurve> curve_returning_near(const Complex& complex, std::uint32_t c, double s);
+
 }  // namespace delpsc::protect

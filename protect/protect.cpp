@@ -43,14 +43,22 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
                   "curves closer together, or meeting at smaller angles, than the size asked for can resolve?",
                   options.max_balls, where.x(), where.y(), where.z(), total_curve_length(complex));
   else {
-    // The nearest other curve (the ball's own does not count; any, for a corner ball).
+    // The nearest other curve (the ball's own does not count; any, for a corner ball), or the
+    // ball's own curve coming back near it (a hairpin), whichever is nearer.
     const std::uint32_t own[] = {curve};
-    const auto other = nearest_curve_except(complex, where, curve == kNoIndex ? std::span<const std::uint32_t>{} : own);
-    char gap[120] = "";
-    if (other) std::snprintf(gap, sizeof gap, " (curve %u passes %.3g from it)", other->curve, other->distance);
+    auto near = nearest_curve_except(complex, where, curve == kNoIndex ? std::span<const std::uint32_t>{} : own);
+    bool returning = false;
+    if (curve != kNoIndex)
+      if (const auto back = curve_returning_near(complex, curve, complex.closest_parameter(curve, where));
+          back && (!near || back->distance < near->distance))
+        near = back, returning = true;
+    char gap[160] = "; the surface nearly touching itself there?";
+    if (near)
+      std::snprintf(gap, sizeof gap, "; curves touching or crossing there (curve %u %s %.3g from it)?", near->curve,
+                    returning ? "itself comes back" : "passes", near->distance);
     std::snprintf(message, sizeof message,
                   "protection stopped: a ball of radius %.3g at (%.6g, %.6g, %.6g), below the cap of %.3g "
-                  "(%.3g of the bounding-box diagonal), with %zu balls; curves touching or crossing there%s?",
+                  "(%.3g of the bounding-box diagonal), with %zu balls%s",
                   radius, where.x(), where.y(), where.z(), min_radius_, options.min_radius_fraction, balls.size(), gap);
   }
   throw ProtectionError(message, where, balls.size() >= options.max_balls);

@@ -93,3 +93,27 @@ TEST_CASE("narrow corners: a wedge's apex, where its legs leave at the wedge's a
   REQUIRE(right);
   CHECK(right->angle_degrees == doctest::Approx(90));
 }
+
+TEST_CASE("a curve coming back near itself: a hairpin's boundary, named at its gap; none on a cube") {
+  const protect::Complex hairpin = protect::build_complex(io::make_hairpin_sheet(0.03, 4));
+  REQUIRE(hairpin.curves.size() == 4);
+  // The curves along y = 0 and y = 1 run out along z = 0 and back along z = 0.03; from a point
+  // on the lower branch the upper one is 0.03 away, the curve between them about 2 long.
+  std::size_t returning = 0;
+  for (std::uint32_t c = 0; c < hairpin.curves.size(); ++c) {
+    if (hairpin.curves[c].length < 1.5) continue;  // the straight ends at x = 0
+    ++returning;
+    const double s = 0.25;  // a point at x = 0.25 on one branch
+    const auto back = protect::curve_returning_near(hairpin, c, s);
+    REQUIRE(back.has_value());
+    CHECK(back->curve == c);
+    CHECK(back->distance == doctest::Approx(0.03).epsilon(1e-9));
+    // Near the bend the curve's own neighbourhood is no return: nothing closer than the gap.
+    const auto at_bend = protect::curve_returning_near(hairpin, c, hairpin.curves[c].length / 2);
+    CHECK((!at_bend || at_bend->distance >= 0.03 * (1 - 1e-9)));
+  }
+  CHECK(returning == 2);
+  const protect::Complex cube = protect::build_complex(io::make_cube(2));
+  for (std::uint32_t c = 0; c < cube.curves.size(); ++c)
+    CHECK_FALSE(protect::curve_returning_near(cube, c, cube.curves[c].length / 3).has_value());
+}

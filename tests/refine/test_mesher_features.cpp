@@ -361,28 +361,6 @@ TEST_CASE("a ball that reaches a patch its curve does not bound is refined, not 
   }
 }
 
-// A unit square sheet folded back on itself: a layer at z = 0 for x in [0, 1], a half circle of
-// radius gap / 2 in `segments` pieces (180 / segments degrees a turn: no corner at 45), a layer
-// at z = gap back to x = 0. Each of its two boundary curves comes back within `gap` of itself.
-io::TriangleSoup hairpin_sheet(double gap, int segments) {
-  std::vector<std::pair<double, double>> profile{{0.0, 0.0}};  // (x, z)
-  for (int k = 0; k <= segments; ++k) {
-    const double a = std::acos(-1.0) * k / segments;
-    profile.emplace_back(1 + gap / 2 * std::sin(a), gap / 2 * (1 - std::cos(a)));
-  }
-  profile.emplace_back(0.0, gap);
-  io::TriangleSoup soup;
-  for (const auto& [x, z] : profile) {
-    soup.vertices.emplace_back(x, 0, z);
-    soup.vertices.emplace_back(x, 1, z);
-  }
-  for (std::uint32_t i = 0; i + 1 < profile.size(); ++i) {
-    soup.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
-    soup.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
-  }
-  return soup;
-}
-
 TEST_CASE("a curve folding back within a ball radius of itself: the larger ball is refined (C3)") {
   // At 12% of the diagonal (0.17) Protect's balls along the bend's curves are far larger than
   // the gap of 0.03: a small ball on one branch has its centre inside a large one on the other,
@@ -393,7 +371,7 @@ TEST_CASE("a curve folding back within a ball radius of itself: the larger ball 
   // while some large balls still reach across the fold where nothing fails: C3 is not required.
   Run run;
   run.require_c3 = false;
-  const Outcome out = mesh_model(hairpin_sheet(0.03, 4), 0.12, run);
+  const Outcome out = mesh_model(io::make_hairpin_sheet(0.03, 4), 0.12, run);
   CHECK(out.stats.ball_refinements > 0);
 }
 
