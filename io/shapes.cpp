@@ -269,6 +269,22 @@ TriangleSoup make_touching_spheres(int n) {
   return s;
 }
 
+TriangleSoup make_cone(double half_angle_degrees, int around, int rings) {
+  require(half_angle_degrees > 0 && half_angle_degrees < 90 && around >= 8 && rings >= 1,
+          "make_cone: need 0 < half-angle < 90 degrees, around >= 8, rings >= 1");
+  const double radius = std::tan(radians(half_angle_degrees));
+  std::vector<Vec3> base(around);
+  for (int j = 0; j < around; ++j) {
+    const double a = 2 * std::numbers::pi * j / around;
+    base[j] = Vec3(radius * std::cos(a), radius * std::sin(a), 1);
+  }
+  ShapeBuilder b;
+  // The side as a cap over the base circle fanned from the tip: rings of the cone itself.
+  add_ring_cap(b, Vec3::Zero(), base, rings, true);
+  add_ring_cap(b, Vec3(0, 0, 1), base, rings, false);
+  return b.take();
+}
+
 TriangleSoup make_hairpin_sheet(double gap, int segments) {
   require(gap > 0 && segments >= 1, "make_hairpin_sheet: need gap > 0 and segments >= 1");
   std::vector<std::pair<double, double>> profile{{0.0, 0.0}};  // (x, z)

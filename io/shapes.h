@@ -71,6 +71,12 @@ TriangleSoup make_sphere(int n = 8);
 /// 1 / 0 / 2, one component, Euler characteristic 3, no boundary.
 TriangleSoup make_touching_spheres(int n = 8);
 
+/// A closed cone: its tip at the origin, axis +z, height 1, half-angle `half_angle_degrees` (in
+/// (0, 90)), `around` >= 8 segments and `rings` >= 1 rings of its side, a base disk fanned in
+/// rings too. The tip is a corner (protect::kCornerApex) below a half-angle of 30 degrees.
+/// 1 or 2 corners / 1 curve / 2 patches (side and base), Euler characteristic 2.
+TriangleSoup make_cone(double half_angle_degrees = 20, int around = 24, int rings = 4);
+
 /// A unit square sheet folded back on itself: a layer at z = 0 for x in [0, 1], a half circle
 /// of radius gap / 2 in `segments` pieces (180 / segments degrees a turn: with 4 or more, no
 /// corner at the default 45), a layer at z = gap back to x = 0 (gap > 0, segments >= 1). Each

@@ -24,9 +24,10 @@
 //     not 2, when its curve turns by more than the corner angle, when the patches along its two
 //     feature edges differ (the interior of a curve must see the same patches everywhere, or the
 //     complex would not be a complex), or when separate sheets meet only at it (more than one
-//     fan of triangles around it, even without features). Curves are the maximal feature
-//     polylines between corners; a loop of features with no corner gets one at its smallest
-//     vertex index and becomes a closed curve (start corner == end corner).
+//     fan of triangles around it, even without features), or when it is a cone's tip (no
+//     feature edge, its triangles' angles there summing below kApexAngleDegrees). Curves are
+//     the maximal feature polylines between corners; a loop of features with no corner gets one
+//     at its smallest vertex index and becomes a closed curve (start corner == end corner).
 //
 // Conventions: curves are oriented from start_corner to end_corner, parametrised by arc length
 // s in [0, length]. On a closed curve parameters are taken modulo the length (any real s is
@@ -82,7 +83,14 @@ enum CornerFlag : std::uint8_t {
   kCornerIncidence = 4,  ///< the two feature edges see different patches
   kCornerSheets = 8,     ///< several separate fans of triangles meet at the vertex
   kCornerLoop = 16,      ///< chosen on a loop of features that had no corner
+  kCornerApex = 32,      ///< a cone's tip: no feature edge, its triangles' angles there sum below kApexAngleDegrees
 };
+
+/// A vertex with no feature edge whose triangles' angles at it sum to less than this many
+/// degrees is a corner (kCornerApex): the tip of a cone of half-angle below 30 degrees (the sum
+/// is 360 sin(half-angle)), where the surface is no smooth patch - a 0-face of the complex (§1.1).
+/// Refined as a smooth point, the tip looks the same at every scale and refinement never ended.
+inline constexpr double kApexAngleDegrees = 180;
 
 struct Curve {
   std::uint32_t first = 0;  ///< offset of its polyline in curve_vertices and curve_arclength

@@ -56,8 +56,18 @@ void find_corners_and_curves(Complex& complex, const VertexFans& fans) {
     complex.corner_vertex.push_back(v);
     complex.corner_flags.push_back(flags);
   };
+  // The triangles' angles at each vertex, summed (kCornerApex).
+  kernel::LargeVector<double> angle_sum(n_vertices, 0.0);
+  for (const auto& t : complex.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = complex.vertices[t[k]];
+      const Vec3 a = complex.vertices[t[(k + 1) % 3]] - p, b = complex.vertices[t[(k + 2) % 3]] - p;
+      angle_sum[t[k]] += std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  const double apex_sum = kApexAngleDegrees * std::numbers::pi / 180;
   for (std::uint32_t v = 0; v < n_vertices; ++v) {
     std::uint8_t flags = 0;
+    if (degree[v] == 0 && fans.vertex_sheets[v] == 1 && angle_sum[v] > 0 && angle_sum[v] < apex_sum) flags |= kCornerApex;
     if (degree[v] != 0 && degree[v] != 2) flags |= kCornerDegree;
     if (degree[v] == 2) {
       const std::uint32_t e1 = around[start[v]], e2 = around[start[v] + 1];

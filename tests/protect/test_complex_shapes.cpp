@@ -79,6 +79,26 @@ TEST_CASE("capped cylinder: 2 closed curves, an annulus and two disks") {
   for (const auto& curve : c.curves) CHECK(curve.length == doctest::Approx(48 * std::sin(std::numbers::pi / 24)));
 }
 
+TEST_CASE("a cone's tip is a corner below a half-angle of 30 degrees (kCornerApex)") {
+  for (const double half : {10.0, 20.0, 40.0}) {
+    CAPTURE(half);
+    const Complex c = build_complex(io::make_cone(half, 24, 4));
+    const bool tip = half < 30;  // the angles at the tip sum to 360 sin(half)
+    check_counts(c, {tip ? 2u : 1u, 1, 1, 2, 0});  // the base circle: one closed curve
+    std::size_t apex = 0;
+    for (std::uint32_t k = 0; k < c.corner_count(); ++k)
+      if (c.corner_flags[k] == protect::kCornerApex) {
+        ++apex;
+        CHECK(c.vertices[c.corner_vertex[k]].norm() == 0);  // at the tip
+        CHECK(c.corner_curve_ids(k).empty());
+        CHECK(c.corner_patch_ids(k).size() == 1);
+      }
+    CHECK(apex == (tip ? 1u : 0u));
+  }
+  // A smooth closed surface's vertices sum to nearly 360 degrees: none.
+  CHECK(build_complex(io::make_sphere(8)).corner_count() == 0);
+}
+
 TEST_CASE("book of three sheets: one non-manifold spine") {
   const Complex c = build_complex(io::make_book(3, 4));
   check_counts(c, {8, 10, 0, 3, 0});

@@ -375,6 +375,13 @@ TEST_CASE("a curve folding back within a ball radius of itself: the larger ball 
   CHECK(out.stats.ball_refinements > 0);
 }
 
+TEST_CASE("a cone of half-angle 20 degrees: its tip a corner, inside the side") {
+  // Refined as a smooth point, the tip looked the same at every scale: the run went to the vertex
+  // cap (two million, ~100 s). As a corner (protect::kCornerApex) it is protected by a ball.
+  const Outcome out = mesh_model(io::make_cone(20, 24, 4), 0.04);
+  CHECK(out.vertices < 2000);
+}
+
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
   // The contact point is a corner (protect::kCornerSheets) on both patches and on no curve, so
   // inside each: its umbrella there must be a full disk. D2 took it for a boundary point and
