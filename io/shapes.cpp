@@ -285,6 +285,22 @@ TriangleSoup make_cone(double half_angle_degrees, int around, int rings) {
   return b.take();
 }
 
+TriangleSoup make_cone_on_sheet(double half_angle_degrees, int around, int rings) {
+  TriangleSoup cone = make_cone(half_angle_degrees, around, rings);
+  // The sheet: the unit disk in z = 0 fanned around the origin, which is the cone's tip (the
+  // same doubles, so one vertex once welded below).
+  std::vector<Vec3> rim(around);
+  for (int j = 0; j < around; ++j) {
+    const double a = 2 * std::numbers::pi * j / around;
+    rim[j] = Vec3(std::cos(a), std::sin(a), 0);
+  }
+  ShapeBuilder b;
+  for (const auto& t : cone.triangles)
+    b.triangle(b.vertex(cone.vertices[t[0]]), b.vertex(cone.vertices[t[1]]), b.vertex(cone.vertices[t[2]]));
+  add_ring_cap(b, Vec3::Zero(), rim, rings, false);
+  return b.take();
+}
+
 TriangleSoup make_hairpin_sheet(double gap, int segments) {
   require(gap > 0 && segments >= 1, "make_hairpin_sheet: need gap > 0 and segments >= 1");
   std::vector<std::pair<double, double>> profile{{0.0, 0.0}};  // (x, z)

@@ -77,6 +77,12 @@ TriangleSoup make_touching_spheres(int n = 8);
 /// 1 or 2 corners / 1 curve / 2 patches (side and base), Euler characteristic 2.
 TriangleSoup make_cone(double half_angle_degrees = 20, int around = 24, int rings = 4);
 
+/// make_cone standing on its tip in the middle of a sheet: the unit disk in the plane z = 0
+/// (`around` segments, `rings` rings), whose centre vertex is the tip. Two sheets meeting at a
+/// point, the narrow side of the cone rising from it. 3 patches (side, base, disk) / 2 curves
+/// (the rims) / one component, Euler characteristic 2 + 1 - 1 = 2.
+TriangleSoup make_cone_on_sheet(double half_angle_degrees = 10, int around = 24, int rings = 4);
+
 /// A unit square sheet folded back on itself: a layer at z = 0 for x in [0, 1], a half circle
 /// of radius gap / 2 in `segments` pieces (180 / segments degrees a turn: with 4 or more, no
 /// corner at the default 45), a layer at z = gap back to x = 0 (gap > 0, segments >= 1). Each

@@ -408,6 +408,21 @@ bool Mesher::refine_around(PointId p) {
     d1 = r.size;
     best = slot;
   }
+  // A ball whose umbrella misses the failing patch σ altogether (it has facets on other patches,
+  // or none): its largest facets elsewhere do not touch σ. At the tip of a narrow cone meeting a
+  // plane there, each RefineBall was preceded by ~1,200 insertions of plane facets around the
+  // tip, and the cone's umbrella stayed empty one scale down, to the balls' floor or the vertex
+  // cap. σ's own facets one ring out (at p's neighbours) sample σ near p's sphere instead.
+  std::uint32_t empty_patch = kNoElement;
+  if (own_ball_only) {
+    const std::uint32_t sigma = disk_.check(p, facets_).patch;
+    const auto incident = facets_.incident(p);
+    if (sigma != kNoElement &&
+        std::none_of(incident.begin(), incident.end(), [&](const Incidence& x) { return facets_[x.slot].patch == sigma; })) {
+      empty_patch = sigma;
+      best = largest_facet_next_to(p, sigma, d1);
+    }
+  }
   const bool corner = big != kNoBallKey && balls_->ball(big).corner != kNoElement;
   if (best != kNoFacet && d1 >= (corner ? kLocalCornerBallRatio : kLocalBallRatio) * d2) {  // a ball only far above its facets
     ++stats_.insertions_disk;
@@ -417,10 +432,12 @@ bool Mesher::refine_around(PointId p) {
   // A ball with an empty umbrella: a surface point of its cell instead of a smaller ball, which
   // would have the same empty cell one scale down (cell_surface_point.h). At least 1.5 radii out
   // (power 1.25 r²), so the insertions stay bounded below by the ball's radius.
-  if (own_ball_only && facets_.incident(p).empty()) {
+  if (own_ball_only && empty_patch != kNoElement) {
     const double r = balls_->ball(big).radius;
-    const auto x = surface_point_in_cell(dt_, *domain_, p, 1.25 * r * r,
-                                         [&](std::uint32_t patch) { return disk_.on_patch(p, patch); });
+    const bool none = facets_.incident(p).empty();
+    const auto x = surface_point_in_cell(dt_, *domain_, p, 1.25 * r * r, [&](std::uint32_t patch) {
+      return none ? disk_.on_patch(p, patch) : patch == empty_patch;
+    });
     if (x && insert_unweighted(x->point, x->patch, dt_.incident_cell(p))) {
       ++stats_.insertions_empty_cell;
       return true;
@@ -436,6 +453,25 @@ bool Mesher::refine_around(PointId p) {
     if (const BallKey over = larger_ball_over(p); over != kNoBallKey) big = over;
   refine_ball(big);
   return true;
+}
+
+std::uint32_t Mesher::largest_facet_next_to(PointId p, std::uint32_t patch, double& size) const {
+  std::uint32_t best = kNoFacet;
+  size = -1;
+  std::vector<CellId> star;
+  dt_.incident_cells(p, star);
+  for (const CellId c : star)
+    for (int i = 0; i < 4; ++i) {
+      const PointId q = dt_.vertex(c, i);
+      if (q == delaunay::kInfiniteVertex || q == p) continue;
+      for (const Incidence& x : facets_.incident(q)) {
+        const RestrictedFacet& r = facets_[x.slot];
+        if (r.patch != patch || r.discarded || r.size <= size) continue;
+        size = r.size;
+        best = x.slot;
+      }
+    }
+  return best;
 }
 
 BallKey Mesher::larger_ball_over(PointId p) const {

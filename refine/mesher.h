@@ -15,8 +15,9 @@
 //       one and is not redone here: max_vertices is the guard. Locally, x is inserted while
 //       d1 >= kLocalBallRatio d2 (below; kLocalCornerBallRatio for a corner ball), not
 //       d1 >= d2. When p has no usable umbrella facet and is no ball, the global choice is used;
-//       a ball p with no restricted facet at all gets a surface point of its power cell if there
-//       is one (cell_surface_point.h). A D3/D4 failure whose facet's point already proved off
+//       a ball p whose umbrella has no facet on the failing patch σ takes σ's facets at its
+//       neighbours instead (largest_facet_next_to), then a surface point of σ in its power cell
+//       if there is one (cell_surface_point.h). A D3/D4 failure whose facet's point already proved off
 //       V_t (discarded) is handled by the same local step. A D3/D4 facet whose point lies within √2 radii of a ball vertex off its
 //       patch refines that ball instead (ball_reaching_patch: the termination proof assumes
 //       balls keep away from the patches their curves do not bound; Protect does not ensure it).
@@ -225,6 +226,10 @@ class Mesher {
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  // The largest restricted facet on `patch` (not discarded) incident to a neighbour of p in the
+  // triangulation, its size in `size` (-1 if none); kNoFacet if none. Cost: p's star times the
+  // neighbours' umbrellas.
+  std::uint32_t largest_facet_next_to(PointId p, std::uint32_t patch, double& size) const;
   // For a ball vertex p: the largest ball among p's neighbours in the triangulation that holds
   // p's centre and is not adjacent to p (C3 broken, see refine_around); kNoBallKey if none.
   BallKey larger_ball_over(PointId p) const;

@@ -238,11 +238,16 @@ expect 2 "--report $TMP/same.off: the same file as -o $TMP/./same.off" -- \
 [[ ! -e "$TMP/same.off" ]] || fail "a file was written despite -o and --report naming it both"
 expect 2 "-o $TMP/x.off: the same file as --balls $TMP/dir.off/../x.off" -- \
   mesh "$TMP/cube.off" -o "$TMP/x.off" --balls "$TMP/dir.off/../x.off"
-# Refinement that must shrink a ball past protect's cap (the sample part at --angle 100: its 90°
-# creases are then no curves) ended as an 'internal error', exit 1: bad input, named, exit 2.
-# Started from the balls alone: the initial sample happens to satisfy the disk condition there.
-expect 2 "refinement needed protecting balls smaller than the model allows" -- \
-  mesh "$(dirname "$0")/../../samples/part.off" --angle 100 --size 1% --no-initial-sample -o "$TMP/x.off"
+# Refinement that must shrink a ball past protect's cap ended as an 'internal error', exit 1: bad
+# input, named, exit 2. A fin whose lower edge hovers 7e-9 (5e-9 of the diagonal) above a square
+# sheet: far enough for the input check (1e-9), and the fin's balls, which reach the sheet, must
+# shrink below that gap (D3/D4's ball_reaching_patch), under the floor of 1e-8. (The sample part
+# at --angle 100, this test's model before, meshes since a ball whose umbrella misses a patch
+# samples that patch next to it.)
+printf 'OFF\n9 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n0.3 0.5 7e-9\n0.7 0.5 7e-9\n0.7 0.5 0.4\n0.3 0.5 0.4\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 5 6 7\n3 5 7 8\n' >"$TMP/hover.off"
+rm -f "$TMP/x.off"
+expect 2 "refinement needed protecting balls smaller than the model allows" -- mesh "$TMP/hover.off" --size 4% -o "$TMP/x.off"
+[[ ! -e "$TMP/x.off" ]] || fail "hover: an output file was written"
 cp "$TMP/cube.off" "$TMP/keep.off"
 expect 2 "-o $TMP/keep.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/keep.off"
 ln "$TMP/keep.off" "$TMP/hard.off"

@@ -293,12 +293,16 @@ TEST_CASE("local step 2(a) refines balls where they are too large") {
   // Hilbert grid (spatial_sort.cpp) it moved from the 3-page book at 4% to the 4-page one, and
   // with the far frame inserted ahead of the batch (session 21) to the 2-page book at 2-3.5%. So:
   // the books of 2, 3 and 4 pages at 3% and 4%, each fully checked, and a RefineBall among them.
-  // Started from an initial sample, the disk condition holds there without any.
-  std::size_t refinements = 0;
+  // Started from an initial sample, the disk condition holds there without any. Since a ball
+  // whose umbrella misses a page samples that page next to it (Mesher::largest_facet_next_to)
+  // the books need none either way; they stay here, fully checked. Balls far above λ still
+  // need it: the U-folded sheet protected at 30% of its diagonal (balls 15 λ) refines balls
+  // whose facets are all below 1/64 of their radius (kLocalBallRatio), besides the larger balls
+  // over a smaller one's centre (Mesher::larger_ball_over).
   for (const int pages : {2, 3, 4})
-    for (const double size : {0.03, 0.04})
-      refinements += mesh_model(io::make_book(pages, 4), size, {.initial_sample = false}).stats.ball_refinements;
-  CHECK(refinements > 0);
+    for (const double size : {0.03, 0.04}) mesh_model(io::make_book(pages, 4), size, {.initial_sample = false});
+  const Outcome large = mesh_model(io::make_hairpin_sheet(), 0.02, {.edge_fraction = 0.3, .require_c3 = false});
+  CHECK(large.stats.ball_refinements > 0);
 }
 
 TEST_CASE("step 2 started from the balls and seeds alone, as the paper") {
@@ -380,6 +384,22 @@ TEST_CASE("a cone of half-angle 20 degrees: its tip a corner, inside the side") 
   // cap (two million, ~100 s). As a corner (protect::kCornerApex) it is protected by a ball.
   const Outcome out = mesh_model(io::make_cone(20, 24, 4), 0.04);
   CHECK(out.vertices < 2000);
+}
+
+TEST_CASE("narrow cones: a tip whose ball misses the side samples the side next to it") {
+  // At 10 degrees the side leaves the tip's ball through the cell of one point above it: the
+  // tip's umbrella has no facet on the side at any scale. Alone, RefineBall followed RefineBall
+  // to the balls' floor (a ProtectionError); on a sheet, each was preceded by ~1,200 insertions
+  // of the sheet's facets around the tip, and the run went to the vertex cap. The side's own
+  // facets at the tip's neighbours are refined instead (Mesher::largest_facet_next_to).
+  for (const double size : {0.04, 0.01}) {
+    CAPTURE(size);
+    const Outcome alone = mesh_model(io::make_cone(10, 24, 4), size);
+    CHECK(alone.vertices < 8000);
+    const Outcome on_sheet = mesh_model(io::make_cone_on_sheet(10, 24, 4), size);
+    CHECK(on_sheet.report.patches.size() == 3);
+    CHECK(on_sheet.vertices < 8000);
+  }
 }
 
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
