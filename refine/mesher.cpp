@@ -428,7 +428,8 @@ bool Mesher::refine_around(PointId p) {
     ++stats_.insertions_disk;
     return insert_surface_point(best);
   }
-  if (big == kNoBallKey) return false;
+  if (big == kNoBallKey) return places_[p].kind == VertexPlace::Kind::surface && facets_.incident(p).empty() &&
+                                insert_in_own_cell(p);
   // A ball with an empty umbrella: a surface point of its cell instead of a smaller ball, which
   // would have the same empty cell one scale down (cell_surface_point.h). At least 1.5 radii out
   // (power 1.25 r²), so the insertions stay bounded below by the ball's radius.
@@ -452,6 +453,22 @@ bool Mesher::refine_around(PointId p) {
   if (own_ball_only)
     if (const BallKey over = larger_ball_over(p); over != kNoBallKey) big = over;
   refine_ball(big);
+  return true;
+}
+
+bool Mesher::insert_in_own_cell(PointId p) {
+  std::vector<CellId> star;
+  dt_.incident_cells(p, star);
+  double nearest = HUGE_VAL;  // squared distance to p's nearest neighbour
+  for (const CellId c : star)
+    for (int i = 0; i < 4; ++i)
+      if (const PointId q = dt_.vertex(c, i); q != delaunay::kInfiniteVertex && q != p)
+        nearest = std::min(nearest, (dt_.point(q).point() - dt_.point(p).point()).squaredNorm());
+  const std::uint32_t patch = places_[p].patch;
+  const double least = kLocalBallRatio * kLocalBallRatio * nearest;
+  const auto x = surface_point_in_cell(dt_, *domain_, p, least, [&](std::uint32_t s) { return s == patch; });
+  if (!x || !insert_unweighted(x->point, x->patch, dt_.incident_cell(p))) return false;
+  ++stats_.insertions_empty_cell;
   return true;
 }
 

@@ -14,7 +14,8 @@
 //       local choice also terminates, but the packing argument of §3 is written for the global
 //       one and is not redone here: max_vertices is the guard. Locally, x is inserted while
 //       d1 >= kLocalBallRatio d2 (below; kLocalCornerBallRatio for a corner ball), not
-//       d1 >= d2. When p has no usable umbrella facet and is no ball, the global choice is used;
+//       d1 >= d2. When p has no usable umbrella facet and is no ball, the global choice is used,
+//       unless p has no facet at all (insert_in_own_cell);
 //       a ball p whose umbrella has no facet on the failing patch σ takes σ's facets at its
 //       neighbours instead (largest_facet_next_to), then a surface point of σ in its power cell
 //       if there is one (cell_surface_point.h). A D3/D4 failure whose facet's point already proved off
@@ -226,6 +227,15 @@ class Mesher {
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
   bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  // An unweighted vertex p with no restricted facet at all: its patch crosses p's power cell
+  // without meeting a Voronoi edge (on a narrow cone, a band of the side wrapped round inside the
+  // cell of the one point on it). Inserts the surface point of p's patch in p's cell farthest
+  // from p (cell_surface_point.h), if one lies at least kLocalBallRatio times p's nearest-
+  // neighbour distance away, as the local step's other insertions keep that fraction of the
+  // balls' radii. False if there is none. Half that distance was too far for cones narrower
+  // than 8°: the side's far wall is ~2 sin θ times the distance to the tip away, the sample's
+  // spacing there up to λ.
+  bool insert_in_own_cell(PointId p);
   // The largest restricted facet on `patch` (not discarded) incident to a neighbour of p in the
   // triangulation, its size in `size` (-1 if none); kNoFacet if none. Cost: p's star times the
   // neighbours' umbrellas.

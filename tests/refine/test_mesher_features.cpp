@@ -391,11 +391,19 @@ TEST_CASE("narrow cones: a tip whose ball misses the side samples the side next 
   // tip's umbrella has no facet on the side at any scale. Alone, RefineBall followed RefineBall
   // to the balls' floor (a ProtectionError); on a sheet, each was preceded by ~1,200 insertions
   // of the sheet's facets around the tip, and the run went to the vertex cap. The side's own
-  // facets at the tip's neighbours are refined instead (Mesher::largest_facet_next_to).
+  // facets at the tip's neighbours are refined instead (Mesher::largest_facet_next_to). At 5
+  // degrees, a point of the side alone on its ring has no facet either (the band of the side
+  // round the cone lies in its cell), and the paper's global choice refined the whole cone to
+  // the cap: a point of that band in its cell cuts it (Mesher::insert_in_own_cell). (At 3
+  // degrees and 1% the disk condition holds but the side comes out with extra closed pieces:
+  // G2 needs a finer size there.)
   for (const double size : {0.04, 0.01}) {
-    CAPTURE(size);
-    const Outcome alone = mesh_model(io::make_cone(10, 24, 4), size);
-    CHECK(alone.vertices < 8000);
+    for (const double degrees : {10.0, 5.0}) {
+      CAPTURE(size);
+      CAPTURE(degrees);
+      const Outcome alone = mesh_model(io::make_cone(degrees, 24, 4), size);
+      CHECK(alone.vertices < 8000);
+    }
     const Outcome on_sheet = mesh_model(io::make_cone_on_sheet(10, 24, 4), size);
     CHECK(on_sheet.report.patches.size() == 3);
     CHECK(on_sheet.vertices < 8000);
