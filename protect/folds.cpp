@@ -94,6 +94,22 @@ std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3
   return best;
 }
 
+std::optional<NearPatch> nearest_patch_except(const Complex& complex, const Vec3& where,
+                                              std::span<const std::uint32_t> excluded) {
+  std::optional<NearPatch> best;
+  for (std::uint32_t t = 0; t < complex.triangles.size(); ++t) {
+    const std::uint32_t patch = complex.triangle_patch[t];
+    if (std::find(excluded.begin(), excluded.end(), patch) != excluded.end()) continue;
+    const auto& v = complex.triangles[t];
+    const Vec3 near =
+        kernel::closest_point_on_triangle(where, complex.vertices[v[0]], complex.vertices[v[1]], complex.vertices[v[2]])
+            .point;
+    const double d = (near - where).norm();
+    if (d > 0 && (!best || d < best->distance)) best = NearPatch{patch, d};
+  }
+  return best;
+}
+
 std::optional<NearCurve> curve_returning_near(const Complex& complex, std::uint32_t c, double s) {
   const Vec3 where = complex.point_at(c, s);
   const auto polyline = complex.curve_polyline(c);

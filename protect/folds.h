@@ -66,6 +66,19 @@ struct NearCurve {
 std::optional<NearCurve> nearest_curve_except(const Complex& complex, const Vec3& where,
                                               std::span<const std::uint32_t> excluded);
 
+/// A patch passing near a point: its id and its distance.
+struct NearPatch {
+  std::uint32_t patch = kNoIndex;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+/// The patch nearest to `where`, at a distance above zero, among those not in `excluded`, or
+/// nullopt if there is none: for Protect's failure at its floor, a surface nearly touching a
+/// curve it does not bound (a fin's edge hovering over a sheet) rather than another curve.
+/// Rounded arithmetic, a diagnostic. O(triangles).
+std::optional<NearPatch> nearest_patch_except(const Complex& complex, const Vec3& where,
+                                              std::span<const std::uint32_t> excluded);
+
 /// Where curve c comes back near its own point at parameter s: the nearest point of c farther
 /// along the curve from s than 3 times its distance (a hairpin: a sheet folded over, its boundary
 /// returning close by), as {c, distance}; nullopt if none. The gap nearest_curve_except cannot

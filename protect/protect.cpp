@@ -52,8 +52,20 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
       if (const auto back = curve_returning_near(complex, curve, complex.closest_parameter(curve, where));
           back && (!near || back->distance < near->distance))
         near = back, returning = true;
-    char gap[160] = "; the surface nearly touching itself there?";
-    if (near)
+    // A patch the ball's curve (or corner) does not bound, nearer still: a surface nearly
+    // touching the curve (a fin's edge hovering over a sheet), not two curves.
+    std::span<const std::uint32_t> bounded;
+    if (curve != kNoIndex)
+      bounded = complex.curve_patch_ids(curve);
+    else
+      for (std::uint32_t k = 0; k < complex.corner_vertex.size(); ++k)
+        if (complex.vertices[complex.corner_vertex[k]] == where) bounded = complex.corner_patch_ids(k);
+    const auto patch = nearest_patch_except(complex, where, bounded);
+    char gap[200] = "; the surface nearly touching itself there?";
+    if (patch && (!near || patch->distance < near->distance))
+      std::snprintf(gap, sizeof gap, "; the surface nearly touching a %s there (patch %u passes %.3g from it)?",
+                    curve != kNoIndex ? "curve" : "corner", patch->patch, patch->distance);
+    else if (near)
       std::snprintf(gap, sizeof gap, "; curves touching or crossing there (curve %u %s %.3g from it)?", near->curve,
                     returning ? "itself comes back" : "passes", near->distance);
     std::snprintf(message, sizeof message,

@@ -247,6 +247,9 @@ expect 2 "-o $TMP/x.off: the same file as --balls $TMP/dir.off/../x.off" -- \
 printf 'OFF\n9 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n0.3 0.5 7e-9\n0.7 0.5 7e-9\n0.7 0.5 0.4\n0.3 0.5 0.4\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 5 6 7\n3 5 7 8\n' >"$TMP/hover.off"
 rm -f "$TMP/x.off"
 expect 2 "refinement needed protecting balls smaller than the model allows" -- mesh "$TMP/hover.off" --size 4% -o "$TMP/x.off"
+# ... naming the sheet under the fin's edge, not a curve 0.02 away (protect::nearest_patch_except).
+grep -q "the surface nearly touching a curve there (patch 0 passes 7e-09 from it)" "$TMP/err" \
+  || fail "hover: the message does not name the patch under the fin: $(cat "$TMP/err")"
 [[ ! -e "$TMP/x.off" ]] || fail "hover: an output file was written"
 cp "$TMP/cube.off" "$TMP/keep.off"
 expect 2 "-o $TMP/keep.off: the same file as the input" -- mesh "$TMP/keep.off" -o "$TMP/keep.off"

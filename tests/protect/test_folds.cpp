@@ -117,3 +117,18 @@ TEST_CASE("a curve coming back near itself: a hairpin's boundary, named at its g
   for (std::uint32_t c = 0; c < cube.curves.size(); ++c)
     CHECK_FALSE(protect::curve_returning_near(cube, c, cube.curves[c].length / 3).has_value());
 }
+
+TEST_CASE("the patch nearest a curve among those it does not bound: a cube's edge, half an edge away") {
+  // From the middle of an edge, the faces it bounds are at distance 0 and left out; the two faces
+  // through its ends are half an edge away, the other two a whole edge.
+  const protect::Complex cube = protect::build_complex(io::make_cube(2));
+  REQUIRE(cube.curves.size() == 12);
+  for (std::uint32_t c = 0; c < cube.curves.size(); ++c) {
+    const Vec3 middle = cube.point_at(c, cube.curves[c].length / 2);
+    const auto bounded = cube.curve_patch_ids(c);
+    const auto near = protect::nearest_patch_except(cube, middle, bounded);
+    REQUIRE(near.has_value());
+    CHECK(near->distance == doctest::Approx(cube.curves[c].length / 2).epsilon(1e-12));
+    CHECK(std::find(bounded.begin(), bounded.end(), near->patch) == bounded.end());
+  }
+}
