@@ -225,18 +225,20 @@ void Mesher::add_initial_sample(std::span<const BallKey> keys, kernel::LargeVect
                                              options_.sample_ball_clearance);
 }
 
-void Mesher::recheck(PointId p) {
+DiskVerdict Mesher::recheck(PointId p) {
   failing_d12_.erase(p);
   failing_d34_.erase(p);
-  if (p >= places_.size() || places_[p].kind == VertexPlace::Kind::outside) return;
+  if (p >= places_.size() || places_[p].kind == VertexPlace::Kind::outside) return {};
   if (dt_.status(p) != PointStatus::vertex) {
     // A hidden ball still protects its curve but has no umbrella: D1 fails at it.
-    if (dt_.status(p) == PointStatus::hidden && places_[p].kind == VertexPlace::Kind::ball) failing_d12_.insert(p);
-    return;
+    if (dt_.status(p) != PointStatus::hidden || places_[p].kind != VertexPlace::Kind::ball) return {};
+    failing_d12_.insert(p);
+    return {DiskFailure::d1};
   }
   const DiskVerdict v = disk_.check(p, facets_);
   if (v.failure == DiskFailure::d1 || v.failure == DiskFailure::d2) failing_d12_.insert(p);
   if (v.failure == DiskFailure::d3 || v.failure == DiskFailure::d4) failing_d34_.insert(p);
+  return v;
 }
 
 void Mesher::apply(const delaunay::ChangeSet& changes, PointId inserted) {
@@ -379,7 +381,7 @@ void Mesher::refine_ball(BallKey key) {
   }
 }
 
-bool Mesher::refine_around(PointId p) {
+bool Mesher::refine_around(PointId p, std::uint32_t failing_patch) {
   std::uint32_t best = kNoFacet;
   double d1 = -1;
   BallKey big = kNoBallKey;
@@ -414,13 +416,12 @@ bool Mesher::refine_around(PointId p) {
   // tip, and the cone's umbrella stayed empty one scale down, to the balls' floor or the vertex
   // cap. σ's own facets one ring out (at p's neighbours) sample σ near p's sphere instead.
   std::uint32_t empty_patch = kNoElement;
-  if (own_ball_only) {
-    const std::uint32_t sigma = disk_.check(p, facets_).patch;
+  if (own_ball_only && failing_patch != kNoElement) {
     const auto incident = facets_.incident(p);
-    if (sigma != kNoElement &&
-        std::none_of(incident.begin(), incident.end(), [&](const Incidence& x) { return facets_[x.slot].patch == sigma; })) {
-      empty_patch = sigma;
-      best = largest_facet_next_to(p, sigma, d1);
+    if (std::none_of(incident.begin(), incident.end(),
+                     [&](const Incidence& x) { return facets_[x.slot].patch == failing_patch; })) {
+      empty_patch = failing_patch;
+      best = largest_facet_next_to(p, failing_patch, d1);
     }
   }
   const bool corner = big != kNoBallKey && balls_->ball(big).corner != kNoElement;
@@ -588,9 +589,9 @@ void Mesher::run() {
       // Re-verify before acting: an entry goes stale if its vertex's verdict changed without
       // its (triangle, patch) pairs changing (ball adjacency after a RefineBall elsewhere).
       const PointId p = *failing_d12_.begin();
-      recheck(p);
+      const DiskVerdict verdict = recheck(p);
       if (failing_d12_.count(p) == 0) continue;
-      if (options_.local_disk_refinement && refine_around(p)) continue;
+      if (options_.local_disk_refinement && refine_around(p, verdict.patch)) continue;
       const std::uint32_t top = facets_.largest();
       const double d1 = top == kNoFacet ? -1 : facets_[top].size;
       const BallKey big = balls_->largest();
@@ -617,7 +618,7 @@ void Mesher::run() {
       // A record whose point proved off V_t (discarded) would be offered again forever: refine
       // around p instead.
       if (facets_[v.facet].discarded) {
-        if (refine_around(p)) continue;
+        if (refine_around(p, v.patch)) continue;
       } else if (const BallKey near = ball_reaching_patch(facets_[v.facet]); near != kNoBallKey) {
         refine_ball(near);
         continue;

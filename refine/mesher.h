@@ -219,14 +219,16 @@ class Mesher {
                           kernel::LargeVector<VertexPlace>& places);
   // Facets, then re-check touched vertices; `inserted`: the point inserted, kNoPoint after a removal.
   void apply(const delaunay::ChangeSet& changes, PointId inserted);
-  void recheck(PointId p);
+  DiskVerdict recheck(PointId p);  // p's verdict, also kept in failing_d12_ / failing_d34_
   bool insert_surface_point(std::uint32_t facet_slot);
   // Inserts unweighted x on `patch` (walking from `where`); false, and nothing changed, if it
   // came out hidden.
   bool insert_unweighted(const Vec3& x, std::uint32_t patch, delaunay::CellId where);
   // A gross error; `where`: a cell to walk from, on return the cell containing r.point.
   bool far_off_dual_edge(const RestrictedFacet& r, delaunay::CellId& where) const;
-  bool refine_around(PointId p);  // local step 2(a); false if nothing local applies
+  // Local step 2(a) at p, which fails the disk condition on `failing_patch` (the verdict's σ;
+  // kNoElement if unknown); false if nothing local applies.
+  bool refine_around(PointId p, std::uint32_t failing_patch);
   // An unweighted vertex p with no restricted facet at all: its patch crosses p's power cell
   // without meeting a Voronoi edge (on a narrow cone, a band of the side wrapped round inside the
   // cell of the one point on it). Inserts the surface point of p's patch in p's cell farthest
