@@ -61,9 +61,10 @@ class FacetCriteria {
                  FacetCriterion* which = nullptr) const;
 
   const FacetCriteriaOptions& options() const { return options_; }
+  /// λ at x: the smaller of facet_size and sizing(x) (+inf with neither). Throws as badness().
+  double size_bound(const Vec3& x) const;
 
  private:
-  double size_bound(const Vec3& x) const;
 
   FacetCriteriaOptions options_;
   double sin_angle_ = 0;  // sin θ

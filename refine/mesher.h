@@ -25,7 +25,10 @@
 //   (b) else if some restricted facet fails the criteria (facet_criteria.h: size(t, σ) > λ - or
 //       > sizing(x) -, facet_distance, facet_angle), insert the point x of a worst one (the
 //       worst eighth of an octave of badness, in Morton order within it: RestrictedFacets::worst);
-//   (c) repeat while something changed.
+//   (c) repeat while something changed;
+//   (d) not in the paper: then, if a patch's restricted triangles come in several pieces (the
+//       disk condition is local and passes on a closed piece away from the rest: narrow cones),
+//       refine the largest facet of each piece but the largest, and go on (extra_pieces.h).
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
 // facets follow (restricted_facets.h), and only the vertices of changed facets are re-checked.
 //
@@ -143,6 +146,10 @@ struct MesherOptions {
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
   bool local_disk_refinement = true;
+  /// When step 2 ends, a patch whose restricted triangles come in several pieces has the largest
+  /// facet of each piece but its largest refined, and step 2 goes on (refine_extra_pieces in
+  /// mesher.cpp); false: the run ends there, as the paper's.
+  bool refine_extra_pieces = true;
   /// Called with the number of domain vertices every `progress_every` steps of the loop, and
   /// during initialisation (every 2^16 points of the batch insertion and every 2^16 cells of the
   /// first restricted-facet pass), for a progress line; empty: never.
@@ -164,6 +171,7 @@ struct MesherStats {
   std::size_t insertions_size = 0;      ///< step 2(b), facet_size (or sizing) failed worst
   std::size_t insertions_distance = 0;  ///< step 2(b), facet_distance failed worst
   std::size_t insertions_angle = 0;     ///< step 2(b), facet_angle failed worst
+  std::size_t insertions_pieces = 0;    ///< a patch's extra piece sampled (extra_pieces.h)
   std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
   std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
   std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
@@ -249,6 +257,9 @@ class Mesher {
   // √2 radii of (size(t, σ) < radius), the largest such; kNoBallKey if none.
   BallKey ball_reaching_patch(const RestrictedFacet& r) const;
   bool sweep_failures();          // re-checks every vertex; true if some fails
+  // Where step 2 ends: the largest facet of every extra piece of a patch (extra_pieces.h) is
+  // refined; false if there is none, or none above the floor (see mesher.cpp).
+  bool refine_extra_pieces();
   void refine_ball(BallKey key);
   PointId insert_ball(BallKey key);
   void remove_point(PointId p);
