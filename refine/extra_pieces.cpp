@@ -33,21 +33,26 @@ std::vector<ExtraPiece> extra_pieces(const RestrictedFacets& facets, std::size_t
           break;
         }
   }
-  std::vector<std::uint32_t> count(parent.size(), 0), largest(parent.size(), kNoFacet), roots;
+  std::vector<std::uint32_t> count(parent.size(), 0), roots;
   for (const std::uint32_t s : live) {
     const std::uint32_t root = find(s);
-    if (count[root]++ == 0) roots.push_back(root);
-    const RestrictedFacet& r = facets[s];
-    if (!r.discarded && (largest[root] == kNoFacet || r.size > facets[largest[root]].size)) largest[root] = s;
+    if (count[root]++ == 0) roots.push_back(root);  // a root is its piece's first slot: increasing
   }
   std::vector<std::uint32_t> main_piece(patches, kNoFacet);  // per patch, the root with most facets
-  for (const std::uint32_t root : roots) {  // in increasing order: a tie keeps the lower
+  for (const std::uint32_t root : roots) {
     std::uint32_t& m = main_piece[facets[root].patch];
-    if (m == kNoFacet || count[root] > count[m]) m = root;
+    if (m == kNoFacet || count[root] > count[m]) m = root;  // a tie keeps the lower
   }
   std::vector<ExtraPiece> out;
+  std::vector<std::uint32_t> index(parent.size(), kNoFacet);  // per extra root, its place in out
   for (const std::uint32_t root : roots)
-    if (main_piece[facets[root].patch] != root) out.push_back({facets[root].patch, count[root], largest[root]});
+    if (main_piece[facets[root].patch] != root) {
+      index[root] = static_cast<std::uint32_t>(out.size());
+      out.push_back({facets[root].patch, {}});
+    }
+  if (out.empty()) return out;
+  for (const std::uint32_t s : live)
+    if (const std::uint32_t k = index[find(s)]; k != kNoFacet) out[k].facets.push_back(s);
   return out;
 }
 

@@ -19,8 +19,7 @@ namespace delpsc::refine {
 /// A connected piece of one patch's restricted triangles other than its largest piece.
 struct ExtraPiece {
   std::uint32_t patch = 0;
-  std::uint32_t facets = 0;          ///< its restricted triangles
-  std::uint32_t largest = kNoFacet;  ///< the slot of its largest facet not discarded; kNoFacet if all are
+  std::vector<std::uint32_t> facets;  ///< the slots of its restricted triangles, increasing
 };
 
 /// Per patch, the connected pieces of its restricted triangles but the one with the most triangles

@@ -654,23 +654,30 @@ void Mesher::run() {
 
 // G2 (Theorem 4.3) holds once λ is small enough, but the disk condition that step 2 checks is
 // local and passes on a closed piece of a patch's restricted triangles away from the rest
-// (extra_pieces.h). Each such piece has its largest facet refined, as step 2(b) would: the point
-// lies on the patch, power-farther than that facet's size from every vertex, so the pieces are
-// sampled finer until their dual edges no longer cross the patch where they did. A piece whose
-// largest facet is below kLocalCornerBallRatio times λ there is left as it is (the check
-// reports it): that floor bounds the insertions by the packing argument of step 2(a)'s local
+// (extra_pieces.h). Each such piece has its largest facets refined - those within an octave of
+// its largest, as step 2(b) takes a band of badness -: each point lies on the patch,
+// power-farther than its facet's size from every vertex, so the piece is sampled finer until its
+// dual edges no longer cross the patch where they did. The octave keeps the rounds (each a pass
+// over every record) to a few per halving of the piece's facets, not one per insertion. Facets
+// below kLocalCornerBallRatio times λ there are left as they are (the check reports a piece that
+// remains): that floor bounds the insertions by the packing argument of step 2(a)'s local
 // choice. (At kLocalBallRatio a cone of 1° on a sheet kept a piece of 24 facets at its tip at
 // 1%, the largest 0.38 of the floor; at 1/256 it goes after 29 insertions.)
 bool Mesher::refine_extra_pieces() {
-  // Stamped first: an insertion for one piece may forget another's facet and reuse its slot.
+  // Stamped first: an insertion for one facet may forget another and reuse its slot.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> chosen;  // slot, stamp
   for (const ExtraPiece& piece : extra_pieces(facets_, dt_.number_of_points())) {
-    if (piece.largest == kNoFacet) continue;
-    const RestrictedFacet& r = facets_[piece.largest];
-    if (r.size >= kLocalCornerBallRatio * criteria_.size_bound(r.point)) chosen.emplace_back(piece.largest, r.stamp);
+    double largest = 0;
+    for (const std::uint32_t s : piece.facets)
+      if (!facets_[s].discarded) largest = std::max(largest, facets_[s].size);
+    for (const std::uint32_t s : piece.facets) {
+      const RestrictedFacet& r = facets_[s];
+      if (!r.discarded && r.size >= 0.5 * largest && r.size >= kLocalCornerBallRatio * criteria_.size_bound(r.point))
+        chosen.emplace_back(s, r.stamp);
+    }
   }
   for (const auto& [slot, stamp] : chosen) {
-    if (!facets_[slot].alive || facets_[slot].stamp != stamp) continue;
+    if (!facets_[slot].alive || facets_[slot].stamp != stamp || facets_[slot].discarded) continue;
     ++stats_.insertions_pieces;
     insert_surface_point(slot);
   }
