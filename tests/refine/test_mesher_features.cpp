@@ -445,8 +445,20 @@ TEST_CASE("narrower cones: closed pieces of the side away from the rest are samp
     refine::Mesher mesher(domain, balls, options);
     mesher.run();
     CHECK(mesher.failing_vertices().empty());
-    CHECK(!refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points()).empty());
+    const auto pieces = refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points());
+    CHECK(!pieces.empty());
+    // Pieces besides the side, each smaller than it, not the side itself.
+    for (const auto& piece : pieces) CHECK(2 * piece.facets.size() < mesher.restricted_facets().size());
   }
+  // A mesh in one piece per patch has none.
+  refine::PolygonDomain cube(io::make_cube(4));
+  protect::BallSet set = protect::protect(cube.complex(), 0.04 * cube.bounding_box().diagonal());
+  refine::ProtectedBalls balls(set);
+  refine::MesherOptions options;
+  options.facet_size = 0.04 * cube.bounding_box().diagonal();
+  refine::Mesher mesher(cube, balls, options);
+  mesher.run();
+  CHECK(refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points()).empty());
 }
 
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
