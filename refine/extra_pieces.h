@@ -26,8 +26,8 @@ struct ExtraPiece {
 /// (on a tie, the one holding the lowest slot). Triangles of one patch sharing a vertex are in one
 /// piece: where the disk condition holds they share an edge too (a vertex's umbrella on a patch
 /// is one disk), so this is the piece of the output's Skl² for the patch. `point_count`: the
-/// triangulation's number of points (the vertices asked). O(records + incidences) time and
-/// memory, a union-find over the records' slots.
+/// triangulation's number of points (the vertices asked). A union-find over the records' slots:
+/// O(slots) memory, O(records + Σ d²) time for d incidences at a vertex (d ~6 on a surface).
 std::vector<ExtraPiece> extra_pieces(const RestrictedFacets& facets, std::size_t point_count);
 
 }  // namespace delpsc::refine

@@ -677,6 +677,8 @@ bool Mesher::refine_extra_pieces() {
     }
   }
   for (const auto& [slot, stamp] : chosen) {
+    // The loop asks the cap once a step; a batch would overshoot it.
+    if (options_.max_vertices > 0 && domain_vertex_count() >= options_.max_vertices) break;
     if (!facets_[slot].alive || facets_[slot].stamp != stamp || facets_[slot].discarded) continue;
     ++stats_.insertions_pieces;
     insert_surface_point(slot);

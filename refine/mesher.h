@@ -28,7 +28,8 @@
 //   (c) repeat while something changed;
 //   (d) not in the paper: then, if a patch's restricted triangles come in several pieces (the
 //       disk condition is local and passes on a closed piece away from the rest: narrow cones),
-//       refine the largest facet of each piece but the largest, and go on (extra_pieces.h).
+//       refine the facets within an octave of the largest of each piece but the patch's
+//       largest piece, and go on (extra_pieces.h).
 // Everything is incremental: each insert/remove reports its cells (ChangeSet), the restricted
 // facets follow (restricted_facets.h), and only the vertices of changed facets are re-checked.
 //
@@ -146,9 +147,9 @@ struct MesherOptions {
   /// Step 2(a) for a D1/D2 failure at p chooses x and the ball among p's umbrellas (see the
   /// file comment) instead of over the whole mesh; false: the paper's global choice.
   bool local_disk_refinement = true;
-  /// When step 2 ends, a patch whose restricted triangles come in several pieces has the largest
-  /// facet of each piece but its largest refined, and step 2 goes on (refine_extra_pieces in
-  /// mesher.cpp); false: the run ends there, as the paper's.
+  /// When step 2 ends, a patch whose restricted triangles come in several pieces has the facets
+  /// within an octave of the largest of each piece but its largest refined, and step 2 goes on
+  /// (refine_extra_pieces in mesher.cpp); false: the run ends there, as the paper's.
   bool refine_extra_pieces = true;
   /// Called with the number of domain vertices every `progress_every` steps of the loop, and
   /// during initialisation (every 2^16 points of the batch insertion and every 2^16 cells of the
@@ -257,7 +258,7 @@ class Mesher {
   // √2 radii of (size(t, σ) < radius), the largest such; kNoBallKey if none.
   BallKey ball_reaching_patch(const RestrictedFacet& r) const;
   bool sweep_failures();          // re-checks every vertex; true if some fails
-  // Where step 2 ends: the largest facet of every extra piece of a patch (extra_pieces.h) is
+  // Where step 2 ends: the largest facets of every extra piece of a patch (extra_pieces.h) are
   // refined; false if there is none, or none above the floor (see mesher.cpp).
   bool refine_extra_pieces();
   void refine_ball(BallKey key);

@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <delpsc/io/read_model.h>
 #include <delpsc/io/sample_part.h>
@@ -32,6 +33,7 @@ struct Outcome {
   refine::SkeletonReport report;
   refine::MesherStats stats;
   std::size_t vertices = 0;
+  std::size_t extra_pieces = 0;  // refine::extra_pieces at the end
 };
 
 struct Run {
@@ -79,6 +81,7 @@ Outcome mesh_model(const io::TriangleSoup& soup, double size_fraction, Run run =
   CHECK(mesh.corners.size() == domain.corner_count());
   out.stats = mesher.stats();
   out.vertices = mesh.vertices.size();
+  out.extra_pieces = refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points()).size();
   MESSAGE("vertices=" << out.vertices << " triangles=" << mesh.triangles.size()
                       << " ball_refinements=" << out.stats.ball_refinements);
   return out;
@@ -419,22 +422,26 @@ TEST_CASE("narrower cones: closed pieces of the side away from the rest are samp
   // 2 ends and refines their largest facets (refine/extra_pieces.h); mesh_model checks each
   // patch's Euler characteristic and boundary loops against the input's.
   struct Case {
+    const char* name;
     io::TriangleSoup soup;
     double size;
   };
-  const Case cases[] = {{io::make_cone(3, 24, 4), 0.01},
-                        {io::make_cone(2, 24, 4), 0.04},
-                        {io::make_cone(1, 24, 4), 0.01},
-                        {io::make_cone_on_sheet(3, 24, 4), 0.01},
-                        {io::make_cone_on_sheet(1, 24, 4), 0.01}};
+  const Case cases[] = {{"cone 3", io::make_cone(3, 24, 4), 0.01},
+                        {"cone 2", io::make_cone(2, 24, 4), 0.04},
+                        {"cone 1", io::make_cone(1, 24, 4), 0.01},
+                        {"cone 3 on a sheet", io::make_cone_on_sheet(3, 24, 4), 0.01},
+                        {"cone 1 on a sheet", io::make_cone_on_sheet(1, 24, 4), 0.01}};
   for (const Case& c : cases) {
-    CAPTURE(c.size);
+    CAPTURE(c.name);
     const Outcome out = mesh_model(c.soup, c.size);
     CHECK(out.stats.insertions_pieces > 0);
+    CHECK(out.extra_pieces == 0);
     CHECK(out.vertices < 8000);
   }
-  // Without the pieces' refinement the same runs end with the disk condition and extra pieces.
+  // Without the pieces' refinement the same runs end with the disk condition and extra pieces,
+  // each smaller than the rest of its patch (not the side itself).
   for (const Case& c : cases) {
+    CAPTURE(c.name);
     refine::PolygonDomain domain(c.soup);
     const double lambda = c.size * domain.bounding_box().diagonal();
     protect::BallSet set = protect::protect(domain.complex(), lambda);
@@ -444,21 +451,27 @@ TEST_CASE("narrower cones: closed pieces of the side away from the rest are samp
     options.refine_extra_pieces = false;
     refine::Mesher mesher(domain, balls, options);
     mesher.run();
+    CHECK(!mesher.stats().stuck);
     CHECK(mesher.failing_vertices().empty());
     const auto pieces = refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points());
     CHECK(!pieces.empty());
-    // Pieces besides the side, each smaller than it, not the side itself.
-    for (const auto& piece : pieces) CHECK(2 * piece.facets.size() < mesher.restricted_facets().size());
+    std::vector<std::size_t> on_patch(domain.patch_count(), 0);
+    mesher.restricted_facets().for_each([&](std::uint32_t, const refine::RestrictedFacet& r) { ++on_patch[r.patch]; });
+    for (const auto& piece : pieces) CHECK(2 * piece.facets.size() < on_patch[piece.patch]);
   }
-  // A mesh in one piece per patch has none.
-  refine::PolygonDomain cube(io::make_cube(4));
-  protect::BallSet set = protect::protect(cube.complex(), 0.04 * cube.bounding_box().diagonal());
-  refine::ProtectedBalls balls(set);
-  refine::MesherOptions options;
-  options.facet_size = 0.04 * cube.bounding_box().diagonal();
-  refine::Mesher mesher(cube, balls, options);
-  mesher.run();
-  CHECK(refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points()).empty());
+  // A mesh in one piece per patch has none, and gets no such insertion.
+  for (const bool refine_pieces : {false, true}) {
+    refine::PolygonDomain cube(io::make_cube(4));
+    protect::BallSet set = protect::protect(cube.complex(), 0.04 * cube.bounding_box().diagonal());
+    refine::ProtectedBalls balls(set);
+    refine::MesherOptions options;
+    options.facet_size = 0.04 * cube.bounding_box().diagonal();
+    options.refine_extra_pieces = refine_pieces;
+    refine::Mesher mesher(cube, balls, options);
+    mesher.run();
+    CHECK(mesher.stats().insertions_pieces == 0);
+    CHECK(refine::extra_pieces(mesher.restricted_facets(), mesher.triangulation().number_of_points()).empty());
+  }
 }
 
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
