@@ -27,24 +27,33 @@ std::optional<SurfaceHit> surface_point_in_cell(const delaunay::RegularTriangula
   const WeightedPoint& wp = dt.point(p);
   std::optional<SurfaceHit> best;
   double best_power = min_power;
+  const auto consider = [&](const SurfaceHit& h) {
+    // Rounded power first (a filter: the exact tests below decide).
+    const double power = (h.point - wp.point()).squaredNorm() - wp.w;
+    if (power < best_power || !wanted(h.patch)) return;
+    const double x[3] = {h.point.x(), h.point.y(), h.point.z()};
+    if (kernel::power_distance_sign(x, wp.data()) <= 0) return;
+    const bool in_cell = std::none_of(neighbours.begin(), neighbours.end(), [&](PointId q) {
+      return kernel::compare_power_distance(x, wp.data(), dt.point(q).data()) > 0;
+    });
+    if (!in_cell) return;
+    best_power = power;
+    best = h;
+  };
   std::vector<SurfaceHit> hits;
   for (const CellId c : star) {
     if (dt.is_infinite(c)) continue;
     hits.clear();
     domain.intersect_segment(wp.point(), dt.orthocentre(c), hits);
-    for (const SurfaceHit& h : hits) {
-      // Rounded power first (a filter: the exact tests below decide).
-      const double power = (h.point - wp.point()).squaredNorm() - wp.w;
-      if (power < best_power || !wanted(h.patch)) continue;
-      const double x[3] = {h.point.x(), h.point.y(), h.point.z()};
-      if (kernel::power_distance_sign(x, wp.data()) <= 0) continue;
-      const bool in_cell = std::none_of(neighbours.begin(), neighbours.end(), [&](PointId q) {
-        return kernel::compare_power_distance(x, wp.data(), dt.point(q).data()) > 0;
-      });
-      if (!in_cell) continue;
-      best_power = power;
-      best = h;
-    }
+    for (const SurfaceHit& h : hits) consider(h);
+  }
+  if (best) return best;
+  // None on those segments: p on a needle narrower than the spacing around it (a cone of 1°),
+  // whose side wraps round p inside p's cell while every segment from p leaves the needle. The
+  // surface points nearest to p's Voronoi vertices: each is no farther from its vertex than p is.
+  for (const CellId c : star) {
+    if (dt.is_infinite(c)) continue;
+    if (const auto x = domain.closest_point(dt.orthocentre(c))) consider(SurfaceHit{x->point, 0, x->patch, false});
   }
   return best;
 }

@@ -474,6 +474,18 @@ TEST_CASE("narrower cones: closed pieces of the side away from the rest are samp
   }
 }
 
+TEST_CASE("a point alone on a needle finds the needle in its cell through its Voronoi vertices") {
+  // A cone of 1 degree on a sheet at 0.5%: a point of the side with no restricted facet, the
+  // side wrapped round it inside its cell, and every segment from it to its Voronoi vertices
+  // leaving the needle at once (Mesher::insert_in_own_cell found nothing). The paper's global
+  // choice then refined the sheet to the vertex cap (120,000 points in a minute at 0.5%). The
+  // surface points nearest to its Voronoi vertices lie in its cell (cell_surface_point.h).
+  const Outcome out = mesh_model(io::make_cone_on_sheet(1, 24, 4), 0.005);
+  CHECK(!out.stats.stopped_at_max_vertices);
+  CHECK(out.stats.insertions_empty_cell > 0);
+  CHECK(out.vertices < 15000);
+}
+
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
   // The contact point is a corner (protect::kCornerSheets) on both patches and on no curve, so
   // inside each: its umbrella there must be a full disk. D2 took it for a boundary point and
