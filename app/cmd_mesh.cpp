@@ -343,11 +343,12 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (g.verbosity > 0) {
     const refine::MesherStats& s = stats;
     std::fprintf(stderr,
-                 "delpsc: insertions disk=%zu d34=%zu empty_cell=%zu size=%zu distance=%zu angle=%zu pieces=%zu, "
+                 "delpsc: insertions disk=%zu d34=%zu empty_cell=%zu size=%zu distance=%zu angle=%zu pieces=%zu "
+                 "(global choices %zu), "
                  "refused_inside_ball=%zu swallowed=%zu rejected_inaccurate=%zu seeds=%zu sampled=%zu, "
                  "first examination: facets queried=%zu spared by the sample's cover=%zu\n",
                  s.insertions_disk, s.insertions_d34, s.insertions_empty_cell, s.insertions_size, s.insertions_distance,
-                 s.insertions_angle, s.insertions_pieces,
+                 s.insertions_angle, s.insertions_pieces, s.global_choices,
                  s.refused_inside_ball, s.swallowed,
                  s.rejected_inaccurate, s.seeds, s.sampled, s.first_queries, s.cover_skipped);
   }

@@ -593,6 +593,7 @@ void Mesher::run() {
       const DiskVerdict verdict = recheck(p);
       if (failing_d12_.count(p) == 0) continue;
       if (options_.local_disk_refinement && refine_around(p, verdict.patch)) continue;
+      ++stats_.global_choices;
       const std::uint32_t top = facets_.largest();
       const double d1 = top == kNoFacet ? -1 : facets_[top].size;
       const BallKey big = balls_->largest();

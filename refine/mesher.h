@@ -174,6 +174,9 @@ struct MesherStats {
   std::size_t insertions_angle = 0;     ///< step 2(b), facet_angle failed worst
   std::size_t insertions_pieces = 0;    ///< a patch's extra piece sampled (extra_pieces.h)
   std::size_t ball_refinements = 0;     ///< RefineBall calls of step 2(a)
+  /// Step 2(a) steps that took the paper's global d1 and d2 (with local_disk_refinement: nothing
+  /// local applied at the failing vertex): a sign of a configuration the local steps miss.
+  std::size_t global_choices = 0;
   std::size_t refused_inside_ball = 0;  ///< points refused for admissibility
   std::size_t swallowed = 0;            ///< unweighted points removed inside new balls
   std::size_t rejected_inaccurate = 0;  ///< points of an inaccurate dual edge that were hidden
