@@ -663,7 +663,7 @@ void Mesher::run() {
 // below kLocalCornerBallRatio times λ there are left as they are (the check reports a piece that
 // remains): that floor bounds the insertions by the packing argument of step 2(a)'s local
 // choice. (At kLocalBallRatio a cone of 1° on a sheet kept a piece of 24 facets at its tip at
-// 1%, the largest 0.38 of the floor; at 1/256 it goes after 29 insertions.)
+// 1%, the largest 0.38 of that floor; at 1/256 it goes.)
 bool Mesher::refine_extra_pieces() {
   // Stamped first: an insertion for one facet may forget another and reuse its slot.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> chosen;  // slot, stamp
