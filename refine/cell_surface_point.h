@@ -20,11 +20,20 @@
 // leaves the needle at once; the mesher then fell back on the paper's global choice and refined
 // the sheet the cone stood on to 120,000 points in a minute without reaching the point. A
 // surface point nearest to a Voronoi vertex of p is no farther from it than p.
+// When none of those qualifies either, the farthest point of the wanted patches in the cell
+// itself: the patches' triangles near the cell (Domain::triangles_in_box) clipped to its sides,
+// the largest power distance taken at a corner of what is left, moved a millionth of the way to
+// its polygon's centre against rounding. A needle standing in the cell of the ball at its tip (a
+// cone of 8° on a sheet at 2%) is met by no segment from the tip, and the needle's points
+// nearest to the Voronoi vertices lie just outside the cell: refining the ball instead made the
+// same cell one scale down, to the balls' floor.
 // Such a point is admissible (§2.1): p is its power-nearest vertex and it lies outside p's ball,
 // hence outside every ball; and its power distance to every point of the triangulation is at
 // least min_power, which bounds the insertions from below as the packing argument of §3 needs.
 // Cost: one segment query per cell around p and one exact comparison per neighbour and hit;
-// when none qualifies, one closest-point query per cell more.
+// when none qualifies, one closest-point query per cell more; when none of those does, a box
+// query and the clipping of each triangle met by p's neighbours' sides (O(k n) for k triangles
+// and n neighbours), in rounded arithmetic: only the exact comparisons decide what is returned.
 #pragma once
 
 #include <cstdint>

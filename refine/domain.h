@@ -14,6 +14,7 @@
 // tree). All queries are const and must be safe to call from several threads at once.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -54,6 +55,12 @@ struct ClosestSurfacePoint {
   /// A normal of the input where the point lies, in the input's own winding (for a polygon model
   /// (b - a) x (c - a) of the closest input triangle, not normalised); zero where there is none.
   Vec3 normal = Vec3::Zero();
+};
+
+/// A triangle of a patch's representation (for a polygon model, one of its triangles).
+struct PatchTriangle {
+  std::array<Vec3, 3> corners;
+  std::uint32_t patch = 0;
 };
 
 class Domain {
@@ -118,6 +125,14 @@ class Domain {
   /// none): a caller that only asks whether x lies within some distance of the domain bounds the
   /// search by it from the start, which spares most of it.
   virtual std::optional<ClosestSurfacePoint> closest_point(const Vec3& x, double below_squared = HUGE_VAL) const = 0;
+  /// Fills `out` (cleared first) with the triangles of the patches' representation whose boxes
+  /// meet `box` (closed; a superset of the triangles meeting it). The mesher clips them to a
+  /// power cell where no segment finds the surface inside it (cell_surface_point.h). The default
+  /// reports none: that last resort then finds nothing. O(log T + k) for a tree over T triangles.
+  virtual void triangles_in_box(const kernel::Box3& box, std::vector<PatchTriangle>& out) const {
+    (void)box;
+    out.clear();
+  }
 
   /// Appends candidate points for the mesher's initial sample (initial_sample.h) to `points`,
   /// each with its patch in `patches`: points of the patches, about 4 per spacing² of area and

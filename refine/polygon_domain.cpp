@@ -250,6 +250,16 @@ std::optional<ClosestSurfacePoint> PolygonDomain::closest_point(const Vec3& x, d
   return ClosestSurfacePoint{c->point, complex_.triangle_patch[c->triangle], c->squared_distance, (b - a).cross(d - a)};
 }
 
+void PolygonDomain::triangles_in_box(const kernel::Box3& box, std::vector<PatchTriangle>& out) const {
+  std::vector<std::uint32_t> ids;
+  tree_.triangles_in_box(box, ids);
+  out.clear();
+  for (const std::uint32_t t : ids) {
+    const auto& v = complex_.triangles[t];
+    out.push_back({{complex_.vertices[v[0]], complex_.vertices[v[1]], complex_.vertices[v[2]]}, complex_.triangle_patch[t]});
+  }
+}
+
 CandidateParts PolygonDomain::surface_candidates(double spacing, std::size_t budget, kernel::LargeVector<Vec3>& points,
                                                  kernel::LargeVector<std::uint32_t>& patches) const {
   if (!(spacing > 0) || !std::isfinite(spacing)) return {};

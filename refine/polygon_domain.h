@@ -83,6 +83,7 @@ class PolygonDomain final : public Domain {
   void intersect_segment(const Vec3& a, const Vec3& b, std::vector<SurfaceHit>& out) const override;
   void intersect_ray(const Vec3& origin, const Vec3& direction, std::vector<SurfaceHit>& out) const override;
   std::optional<ClosestSurfacePoint> closest_point(const Vec3& x, double below_squared = HUGE_VAL) const override;
+  void triangles_in_box(const kernel::Box3& box, std::vector<PatchTriangle>& out) const override;
   /// The triangles the closed segment [a, b] meets, before merging into per-patch hits, in
   /// increasing triangle order: those of kernel::AabbTree::intersect_segment over all of them,
   /// with fans searched by angle (the angular search's predicates take only points in their

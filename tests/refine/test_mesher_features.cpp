@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <delpsc/io/read_model.h>
@@ -484,6 +485,21 @@ TEST_CASE("a point alone on a needle finds the needle in its cell through its Vo
   CHECK(!out.stats.stopped_at_max_vertices);
   CHECK(out.stats.insertions_empty_cell > 0);
   CHECK(out.vertices < 15000);
+}
+
+TEST_CASE("a needle on a sheet: the side, met by no segment from the tip, is clipped to the tip's cell") {
+  // A cone of 8 degrees standing on a sheet at 2% (1.5 degrees at 4%): the tip's ball fails D1
+  // on the side with no facet of it at the tip or at its neighbours; every segment from the tip
+  // to its Voronoi vertices leaves the needle at once, and the side's points nearest to those
+  // vertices lie just outside the cell. Refining the ball made the same cell one scale down:
+  // RefineBall after RefineBall to the balls' floor (a ProtectionError). The side's triangles
+  // clipped to the cell give its farthest point there (cell_surface_point.h).
+  for (const auto& [degrees, size] : {std::pair{8.0, 0.02}, std::pair{1.5, 0.04}}) {
+    CAPTURE(degrees);
+    const Outcome out = mesh_model(io::make_cone_on_sheet(degrees, 24, 4), size);
+    CHECK(out.stats.insertions_empty_cell > 0);
+    CHECK(out.vertices < 5000);
+  }
 }
 
 TEST_CASE("two spheres touching at a vertex: a corner with no curve is inside each sphere") {
