@@ -51,6 +51,7 @@ struct MeshCommandOptions {
   std::string balls_path;
   std::string preview;
   bool check = false;
+  bool progress = false;  ///< --progress: progress lines in a log too (stderr not a terminal)
   bool no_initial_sample = false;
   bool no_distances = false;
   double max_seconds = 0;  // 0: no limit
@@ -94,7 +95,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   if (!o.preview.empty()) check_preview_path(o.preview);
   if (!o.balls_path.empty()) check_output_path(o.balls_path, "--balls");
   const TimeLimit time_limit(o.max_seconds);
-  ProgressLine progress(progress_wanted(g.quiet));
+  ProgressLine progress(progress_wanted(g.quiet, o.progress));
   PhaseTimes phases;
   progress.phase("read");
   const auto t_read = Clock::now();
@@ -453,6 +454,10 @@ Runner register_mesh(CLI::App& app) {
   app.add_flag("--check", o->check,
                "Check guarantee G1 on the output: each patch's triangles a 2-manifold bounded by its "
                "curves' edges, every vertex on the model; exit 1 if it fails");
+  app.add_flag("--progress", o->progress,
+               "Show progress also when stderr is no terminal (a batch job's log): a line when each phase starts "
+               "and every 10 s within it - the phase, vertices, their rate and the time so far (on a terminal one "
+               "line redrawn in place, without this flag; -q: none)");
   app.add_flag("--no-distances", o->no_distances,
                "Do not measure the distances between the mesh and the input (hausdorff..., feature_distance and "
                "hausdorff_spacing are then 'unmeasured'): on the CGAL demo models at 1% the measurement takes two "

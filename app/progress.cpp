@@ -6,7 +6,7 @@
 
 namespace delpsc::app {
 
-ProgressLine::ProgressLine(bool enabled) : enabled_(enabled), start_(Clock::now()) {
+ProgressLine::ProgressLine(ProgressMode mode) : mode_(mode), start_(Clock::now()) {
   phase_start_ = last_draw_ = start_;
 }
 
@@ -23,23 +23,25 @@ void ProgressLine::phase(const std::string& name, std::size_t vertices) {
 void ProgressLine::vertices(std::size_t count) {
   vertices_ = count;
   counting_ = true;
-  if (enabled_ && Clock::now() - last_draw_ > std::chrono::milliseconds(200)) draw();
+  const auto every = mode_ == ProgressMode::log ? std::chrono::milliseconds(10'000) : std::chrono::milliseconds(200);
+  if (enabled() && Clock::now() - last_draw_ > every) draw();
 }
 
 void ProgressLine::draw() {
-  if (!enabled_) return;
+  if (!enabled()) return;
+  const bool terminal = mode_ == ProgressMode::terminal;
   const auto now = Clock::now();
   last_draw_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double in_phase = std::chrono::duration<double>(now - phase_start_).count();
-  std::fprintf(stderr, "\rdelpsc: %-13s", phase_.c_str());
+  std::fprintf(stderr, terminal ? "\rdelpsc: %-13s" : "delpsc: %-13s", phase_.c_str());
   if (counting_) std::fprintf(stderr, " %9zu vertices", vertices_);
   // The rate only once it means something (a second into the phase, some vertices added).
   if (in_phase > 1 && vertices_ > phase_start_vertices_)
     std::fprintf(stderr, " %8.0f/s", static_cast<double>(vertices_ - phase_start_vertices_) / in_phase);
-  std::fprintf(stderr, " %7.1f s\033[K", elapsed);
+  std::fprintf(stderr, terminal ? " %7.1f s\033[K" : " %7.1f s\n", elapsed);
   std::fflush(stderr);
-  drawn_ = true;
+  drawn_ = terminal;  // a log's lines stay
 }
 
 void ProgressLine::clear() {
@@ -49,6 +51,10 @@ void ProgressLine::clear() {
   drawn_ = false;
 }
 
-bool progress_wanted(bool quiet) { return !quiet && isatty(STDERR_FILENO); }
+ProgressMode progress_wanted(bool quiet, bool asked) {
+  if (quiet) return ProgressMode::off;
+  if (isatty(STDERR_FILENO)) return ProgressMode::terminal;
+  return asked ? ProgressMode::log : ProgressMode::off;
+}
 
 }  // namespace delpsc::app

@@ -1,7 +1,8 @@
-// A progress line on stderr for long runs of `delpsc mesh`: the phase (protect, refine, check,
-// output), the number of vertices, their rate in this phase and the time elapsed, redrawn in
-// place at most a few times a second. Silent unless enabled (the command enables it when stderr
-// is a terminal and -q is not given), so logs and pipes never see carriage returns.
+// Progress on stderr for long runs of `delpsc mesh`: the phase (protect, refine, check, output),
+// the number of vertices, their rate in this phase and the time elapsed. On a terminal one line
+// redrawn in place at most a few times a second; in a log (`--progress` with stderr a file or a
+// pipe: a batch job's log) plain lines, one when a phase starts and one every ten seconds within
+// it, with no carriage returns or terminal codes. Silent otherwise, and with -q.
 #pragma once
 
 #include <chrono>
@@ -10,9 +11,12 @@
 
 namespace delpsc::app {
 
+/// Where progress goes: nowhere, a line redrawn in place, or lines appended to a log.
+enum class ProgressMode { off, terminal, log };
+
 class ProgressLine {
  public:
-  explicit ProgressLine(bool enabled);
+  explicit ProgressLine(ProgressMode mode);
   ~ProgressLine();
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;
@@ -20,18 +24,18 @@ class ProgressLine {
   /// Starts a phase named `name` with `vertices` so far (0: none to show until vertices() is
   /// called); the rate counts vertices from here. Draws at once.
   void phase(const std::string& name, std::size_t vertices = 0);
-  /// The vertex count now; redraws if the last drawing is older than 0.2 s.
+  /// The vertex count now; redraws if the last drawing is older than 0.2 s (a log: 10 s).
   void vertices(std::size_t count);
   /// Erases the line (also done by the destructor), so the report that follows starts clean.
   void clear();
 
-  bool enabled() const { return enabled_; }
+  bool enabled() const { return mode_ != ProgressMode::off; }
 
  private:
   using Clock = std::chrono::steady_clock;
   void draw();
 
-  bool enabled_;
+  ProgressMode mode_;
   bool drawn_ = false;
   bool counting_ = false;  // this phase has a vertex count to show
   std::string phase_;
@@ -39,7 +43,8 @@ class ProgressLine {
   Clock::time_point start_, phase_start_, last_draw_;
 };
 
-/// True when progress should be shown: stderr is a terminal and -q was not given.
-bool progress_wanted(bool quiet);
+/// How progress is shown: off with -q (`quiet`); on a terminal when stderr is one; else in a log
+/// when asked for (`--progress`), else off.
+ProgressMode progress_wanted(bool quiet, bool asked);
 
 }  // namespace delpsc::app

@@ -177,7 +177,7 @@ grep -Eq "first examination: facets queried=[1-9][0-9]* spared by the sample's c
 expect 2 "" -- mesh "$TMP/none.off" -o "$TMP/x.off" --report "$TMP/fail.json"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); sys.exit(not (r["exit_code"] == 2 and "none.off" in r["error"]))' \
   "$TMP/fail.json" || fail "--report of a failed run: $(cat "$TMP/fail.json")"
-# Progress: silent when stderr is a file (as in every run above), shown on a terminal (a pseudo-
+# Progress: silent when stderr is a file (as in every run above) unless asked, shown on a terminal (a pseudo-
 # terminal from script(1), stdin from /dev/null so that it runs without one), silent with -q.
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off"
 ! grep -q $'\r' "$TMP/err" || fail "progress written to a non-terminal stderr"
@@ -185,6 +185,14 @@ script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off'" /dev/nul
 grep -q "delpsc: refine .*vertices" "$TMP/tty" || fail "no progress on a terminal: $(head -c 300 "$TMP/tty")"
 script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off' -q" /dev/null </dev/null >"$TMP/tty" 2>&1
 grep -q "vertices=" "$TMP/tty" && ! grep -q "delpsc: refine" "$TMP/tty" || fail "-q on a terminal: $(head -c 300 "$TMP/tty")"
+# --progress with stderr a file (a batch job's log): plain lines, one per phase (every 10 s within
+# one), no carriage return or terminal code; -q still silences it.
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" --progress
+grep -q "^delpsc: refine " "$TMP/err" && grep -q "^delpsc: output .* vertices .* s$" "$TMP/err" \
+  || fail "--progress in a log: $(head -c 300 "$TMP/err")"
+! grep -q $'[\r\033]' "$TMP/err" || fail "--progress in a log wrote terminal codes"
+expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" --progress -q
+! grep -q "^delpsc: refine" "$TMP/err" || fail "--progress -q: $(head -c 300 "$TMP/err")"
 # Bad paths for the report and the preview: exit 2 before any meshing, nothing written.
 expect 2 "--report $TMP/no/dir/r.json: no such directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP/no/dir/r.json"
 expect 2 "--report $TMP: is a directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP"
