@@ -14,7 +14,7 @@ using delaunay::PointId;
 
 namespace {
 
-/// One side of a power cell, in coordinates relative to the cell's vertex: y.normal <= offset.
+/// One side of p's power cell, in coordinates y = x - p relative to p's centre: y.normal <= offset.
 struct HalfSpace {
   Vec3 normal;
   double offset;

@@ -32,8 +32,10 @@
 // least min_power, which bounds the insertions from below as the packing argument of §3 needs.
 // Cost: one segment query per cell around p and one exact comparison per neighbour and hit;
 // when none qualifies, one closest-point query per cell more; when none of those does, a box
-// query and the clipping of each triangle met by p's neighbours' sides (O(k n) for k triangles
-// and n neighbours), in rounded arithmetic: only the exact comparisons decide what is returned.
+// query and the clipping of each triangle met by p's neighbours' sides (O(k n m) for k triangles,
+// n neighbours and clipped polygons of m corners), in rounded arithmetic: only the exact
+// comparisons decide what is returned. A patch touching the cell only along an edge or at a
+// point (a clipped polygon of fewer than three corners) is passed over.
 #pragma once
 
 #include <cstdint>
