@@ -456,8 +456,8 @@ Runner register_mesh(CLI::App& app) {
                "curves' edges, every vertex on the model; exit 1 if it fails");
   app.add_flag("--progress", o->progress,
                "Show progress also when stderr is no terminal (a batch job's log): a line when each phase starts "
-               "and every 10 s within it - the phase, vertices, their rate and the time so far (on a terminal one "
-               "line redrawn in place, without this flag; -q: none)");
+               "and every 10 s while refining - the phase, vertices, their rate and the time so far (on a terminal "
+               "one line redrawn in place, without this flag; -q: none)");
   app.add_flag("--no-distances", o->no_distances,
                "Do not measure the distances between the mesh and the input (hausdorff..., feature_distance and "
                "hausdorff_spacing are then 'unmeasured'): on the CGAL demo models at 1% the measurement takes two "

@@ -1,8 +1,9 @@
 // Progress on stderr for long runs of `delpsc mesh`: the phase (protect, refine, check, output),
 // the number of vertices, their rate in this phase and the time elapsed. On a terminal one line
 // redrawn in place at most a few times a second; in a log (`--progress` with stderr a file or a
-// pipe: a batch job's log) plain lines, one when a phase starts and one every ten seconds within
-// it, with no carriage returns or terminal codes. Silent otherwise, and with -q.
+// pipe: a batch job's log) plain lines, one when a phase starts and one every ten seconds while
+// vertices are counted (refinement), with no carriage returns or terminal codes. Silent
+// otherwise, and with -q.
 #pragma once
 
 #include <chrono>

@@ -181,12 +181,13 @@ python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); sys.exit(not (r[
 # terminal from script(1), stdin from /dev/null so that it runs without one), silent with -q.
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off"
 ! grep -q $'\r' "$TMP/err" || fail "progress written to a non-terminal stderr"
+! grep -q "^delpsc: refine " "$TMP/err" || fail "progress lines in a log without --progress"
 script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off'" /dev/null </dev/null >"$TMP/tty" 2>&1
 grep -q "delpsc: refine .*vertices" "$TMP/tty" || fail "no progress on a terminal: $(head -c 300 "$TMP/tty")"
 script -qec "'$DELPSC' mesh '$TMP/cube.off' --size 10% -o '$TMP/r.off' -q" /dev/null </dev/null >"$TMP/tty" 2>&1
 grep -q "vertices=" "$TMP/tty" && ! grep -q "delpsc: refine" "$TMP/tty" || fail "-q on a terminal: $(head -c 300 "$TMP/tty")"
-# --progress with stderr a file (a batch job's log): plain lines, one per phase (every 10 s within
-# one), no carriage return or terminal code; -q still silences it.
+# --progress with stderr a file (a batch job's log): plain lines, one per phase (and every 10 s
+# while refining), no carriage return or terminal code; -q still silences it.
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" --progress
 grep -q "^delpsc: refine " "$TMP/err" && grep -q "^delpsc: output .* vertices .* s$" "$TMP/err" \
   || fail "--progress in a log: $(head -c 300 "$TMP/err")"
