@@ -62,7 +62,17 @@ void Engine::fail_caps(double radius, const Vec3& where, std::uint32_t curve) co
         if (complex.vertices[complex.corner_vertex[k]] == where) bounded = complex.corner_patch_ids(k);
     const auto patch = nearest_patch_except(complex, where, bounded);
     char gap[200] = "; the surface nearly touching itself there?";
-    if (patch && (!near || patch->distance < near->distance))
+    // Nothing within kNearRadii radii: the balls shrank for the surface at this one place (the
+    // mesher refining the ball at a needle's tip whose umbrella it could not make a disk), not for
+    // a gap to another curve or patch; calling a curve half the model away "touching" misled.
+    constexpr double kNearRadii = 1e4;
+    const bool patch_nearer = patch && (!near || patch->distance < near->distance);
+    const double nearest = patch_nearer ? patch->distance : near ? near->distance : HUGE_VAL;
+    if (nearest < HUGE_VAL && nearest > kNearRadii * radius)
+      std::snprintf(gap, sizeof gap, "; no other curve or patch within 10^4 radii of it (the nearest, %s %u, %s %.3g from it)",
+                    patch_nearer ? "patch" : "curve", patch_nearer ? patch->patch : near->curve,
+                    !patch_nearer && returning ? "itself comes back" : "passes", nearest);
+    else if (patch_nearer)
       std::snprintf(gap, sizeof gap, "; the surface nearly touching a %s there (patch %u passes %.3g from it)?",
                     curve != kNoIndex ? "curve" : "corner", patch->patch, patch->distance);
     else if (near)

@@ -240,6 +240,28 @@ TEST_CASE("protect: the floor for a size stops balls 10^4 times below it, naming
   CHECK(protect::options_for_size(1e-12, 1).min_radius_fraction == protect::ProtectOptions{}.min_radius_fraction);
 }
 
+TEST_CASE("protect: the floor message names no curve as touching when nothing comes near the ball") {
+  // The mesher halving a cone's tip ball to the floor (a needle whose umbrella it could not make a
+  // disk): the nearest other curve or patch, the base, is a whole cone away. The message said
+  // "curves touching or crossing there (curve 1 passes 0.991 from it)?"; now that nothing is near.
+  const protect::Complex cone = protect::build_complex(io::make_cone(20, 24, 4));
+  BallSet balls(cone);
+  const double d = balls.diagonal();
+  const protect::ProtectOptions options = protect::options_for_size(0.04 * d, d);
+  balls = protect::protect(cone, 0.04 * d, options);
+  std::uint32_t tip = 0;
+  while (cone.vertices[cone.corner_vertex[tip]].norm() > 0) ++tip;
+  try {
+    for (int k = 0; k < 100; ++k) protect::refine_ball(balls, balls.corner_ball(tip), options);
+    FAIL("the tip ball never reached the floor");
+  } catch (const protect::ProtectionError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("below the cap") != std::string::npos);
+    CHECK(what.find("no other curve or patch within 10^4 radii of it (the nearest, ") != std::string::npos);
+    CHECK(what.find("touching") == std::string::npos);
+  }
+}
+
 TEST_CASE("protect: safety caps end in a ProtectionError, bad arguments in invalid_argument") {
   const protect::Complex wedge = protect::build_complex(io::make_wedge(10, 0.1));
   protect::ProtectOptions few;
