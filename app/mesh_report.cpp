@@ -119,8 +119,14 @@ void report_complex_topology(const refine::ComplexTopology& output, const refine
   for (const std::string& d : differences) json.value(d);
   json.end_array().key("matches_input").value(differences.empty());
   final_report().add_json("topology", json.end_object().str());
-  if (!g.quiet)
-    for (const std::string& d : differences) std::fprintf(stderr, "delpsc: topology: %s\n", d.c_str());
+  if (g.quiet || differences.empty()) return;
+  for (const std::string& d : differences) std::fprintf(stderr, "delpsc: topology: %s\n", d.c_str());
+  // What to do about it: G2 (Theorem 4.3) holds once refinement ends at a size below the
+  // model's local feature size; a tube or gap thinner than the size is merged or lost.
+  std::fprintf(stderr,
+               "delpsc: topology: DelPSC guarantees the input's topology only when refinement ends at a size "
+               "below the model's thinnest parts and narrowest gaps (Dey & Levine, Theorem 4.3); a smaller --size "
+               "resolves them\n");
 }
 
 }  // namespace delpsc::app

@@ -81,6 +81,19 @@ CHECK
 }
 
 # write_cube FILE: the unit cube [0,1]^3 as an OFF file, 12 outward-oriented triangles.
+# write_thin_torus FILE: a torus of radii 1 and 0.02 (48 x 8 quads split in two), thinner than a
+# size of 10% (0.2 of its diagonal of ~2.8): meshed there it loses its genus.
+write_thin_torus() {
+  awk 'BEGIN { R = 1; r = 0.02; n = 48; m = 8; pi = atan2(0, -1)
+    print "OFF"; print n * m, 2 * n * m, 0
+    for (i = 0; i < n; i++) for (j = 0; j < m; j++) {
+      u = 2 * pi * i / n; v = 2 * pi * j / m
+      printf "%.17g %.17g %.17g\n", (R + r * cos(v)) * cos(u), (R + r * cos(v)) * sin(u), r * sin(v) }
+    for (i = 0; i < n; i++) for (j = 0; j < m; j++) {
+      a = i * m + j; b = ((i + 1) % n) * m + j; c = ((i + 1) % n) * m + (j + 1) % m; d = i * m + (j + 1) % m
+      print 3, a, b, c; print 3, a, c, d } }' >"$1"
+}
+
 write_cube() {
   cat >"$1" <<'MODEL'
 OFF

@@ -194,6 +194,14 @@ grep -q "^delpsc: refine " "$TMP/err" && grep -q "^delpsc: output .* vertices .*
 ! grep -q $'[\r\033]' "$TMP/err" || fail "--progress in a log wrote terminal codes"
 expect 0 "" -- mesh "$TMP/cube.off" --size 10% -o "$TMP/r.off" --progress -q
 ! grep -q "^delpsc: refine" "$TMP/err" || fail "--progress -q: $(head -c 300 "$TMP/err")"
+# A torus thinner than the size: the mesh comes out with the wrong genus, which the report says
+# (topology_ok=false, the difference on stderr) with what to do about it; at 1% it is right.
+write_thin_torus "$TMP/torus.off"
+expect 0 "a smaller --size resolves them" -- mesh "$TMP/torus.off" --size 10% -o "$TMP/r.off"
+[[ "$(value topology_ok)" == "false" ]] || fail "thin torus at 10%: topology_ok=$(value topology_ok)"
+grep -q "delpsc: topology: Euler characteristic: output 2, input 0" "$TMP/err" || fail "thin torus: $(head -c 300 "$TMP/err")"
+expect 0 "" -- mesh "$TMP/torus.off" --size 1% -o "$TMP/r.off"
+[[ "$(value topology_ok)" == "true" ]] && ! grep -q "smaller --size" "$TMP/err" || fail "thin torus at 1%: topology_ok=$(value topology_ok)"
 # Bad paths for the report and the preview: exit 2 before any meshing, nothing written.
 expect 2 "--report $TMP/no/dir/r.json: no such directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP/no/dir/r.json"
 expect 2 "--report $TMP: is a directory" -- mesh "$TMP/cube.off" -o "$TMP/x.off" --report "$TMP"
