@@ -60,6 +60,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
+  report("duplicate_triangles", complex.cleanup.duplicate_triangles);  // repeats: mesh refuses
   // The one step whose time is not linear in the model (pairs of overlapping boxes: a cone's side
   // of d triangles against a base triangulated in one strip of thin triangles makes ~d²/4 of
   // them; a fan's own pairs, flat or a cone's, are settled at once, and pairs across two fans by

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include <delpsc/io/mesh_writer.h>
 #include <delpsc/io/output_file.h>
@@ -104,7 +105,9 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("features");
   const auto t0 = Clock::now();
   // The domain's tree serves the input checks too (a second tree was ~5% of meshing fandisk at 2%).
-  const refine::PolygonDomain domain(load_complex(model, o.input, o.angle, o.corner_angle, g));
+  protect::Complex complex = load_complex(model, o.input, o.angle, o.corner_angle, g);
+  reject_duplicate_triangles(complex, o.input);
+  const refine::PolygonDomain domain(std::move(complex));
   progress.phase("input check");
   reject_self_intersections(domain.complex(), domain.tree(), o.input, &time_limit);
   reject_empty_complex(domain.complex(), model, o.input, "mesh");

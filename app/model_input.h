@@ -119,6 +119,23 @@ inline void reject_near_contact(const protect::Complex& complex, const std::arra
   throw Failure{kBadInput, message};
 }
 
+/// A bad-input exit when the complex lists a triangle more than once (protect::CleanupReport::
+/// duplicate_triangles): the copies overlap everywhere, a self-intersection said at once and by
+/// name. Before the domain's fans and the search for crossings, which meet every pair of a
+/// triangle's copies (a polygon of millions of repeated indices: minutes to years).
+inline void reject_duplicate_triangles(const protect::Complex& complex, const std::string& path) {
+  const std::size_t repeats = complex.cleanup.duplicate_triangles;
+  if (repeats == 0) return;
+  const auto [s, t] = complex.cleanup.first_duplicate;
+  char message[512];
+  std::snprintf(message, sizeof message,
+                "%s: the model lists a triangle more than once: triangles %u and %u (counted after splitting "
+                "polygons into triangles) have the same three vertices, and %zu repeat(s) in all; DelPSC needs "
+                "surfaces that meet only along shared edges and vertices - remove the repeats",
+                path.c_str(), s, t, repeats);
+  throw Failure{kBadInput, message};
+}
+
 /// A bad-input exit when two triangles of the complex cross or overlap other than along a shared
 /// edge or vertex (protect/self_intersections.h): such a model is no piecewise smooth complex
 /// (§1.1), the disk condition can never hold along the crossing, and refinement would run until
@@ -127,6 +144,7 @@ inline void reject_near_contact(const protect::Complex& complex, const std::arra
 /// can stop the search (--max-seconds): the command then ends with exit code 1, nothing written.
 inline void reject_self_intersections(const protect::Complex& complex, const kernel::AabbTree& tree,
                                       const std::string& path, const TimeLimit* limit = nullptr) {
+  reject_duplicate_triangles(complex, path);
   kernel::Box3 box;
   for (const Vec3& p : complex.vertices) box.extend(p);
   const double tolerance = kNearContactFraction * (box.hi - box.lo).norm();

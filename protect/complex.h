@@ -121,6 +121,11 @@ struct CleanupReport {
   /// healed as caps (kept as they are where their long edge is not shared by exactly one other
   /// triangle)
   std::vector<std::uint32_t> flat_caps;
+  /// Triangles that repeat an earlier one (the same three vertices once welded): m copies count
+  /// m - 1. Such a model overlaps itself; the commands refuse it (find_duplicate_triangles).
+  std::size_t duplicate_triangles = 0;
+  /// Soup indices of the first repeat found and the triangle it repeats (kNoIndex without one).
+  std::array<std::uint32_t, 2> first_duplicate{kNoIndex, kNoIndex};
 };
 
 // The arrays are kernel::LargeVector (std::vector on the huge-page pool of kernel/large_array.h):

@@ -17,6 +17,10 @@ kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup,
 /// (edge_table.cpp)
 void build_edge_table(Complex& complex);
 
+/// Reads triangles, triangle_source and the edge table; writes cleanup.duplicate_triangles and
+/// cleanup.first_duplicate. (duplicate_triangles.cpp)
+void find_duplicate_triangles(Complex& complex);
+
 /// Index of the undirected edge {u, v}, or kNoIndex. O(log d) for d edges at min(u, v).
 std::uint32_t find_edge(const Complex& complex, std::uint32_t u, std::uint32_t v);
 

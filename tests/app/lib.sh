@@ -82,7 +82,7 @@ CHECK
 
 # write_cube FILE: the unit cube [0,1]^3 as an OFF file, 12 outward-oriented triangles.
 # write_thin_torus FILE: a torus of radii 1 and 0.02 (48 x 8 quads split in two), thinner than a
-# size of 10% (0.2 of its diagonal of ~2.8): meshed there it loses its genus.
+# size of 10% of its diagonal (0.28): meshed there it loses its genus.
 write_thin_torus() {
   awk 'BEGIN { R = 1; r = 0.02; n = 48; m = 8; pi = atan2(0, -1)
     print "OFF"; print n * m, 2 * n * m, 0

@@ -22,6 +22,14 @@ expect 0 "cross or overlap" -- info "$TMP/crossing.off"
 [[ "$(value self_intersections)" == "1" ]] || fail "crossing: self_intersections=$(value self_intersections)"
 [[ "$(value warnings)" == "$(grep -c "warning" "$TMP/err")" ]] || fail "crossing: warnings=$(value warnings)"
 
+# A triangle listed twice (once reversed): counted as a repeat, and as a crossing pair.
+printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n3 2 1 0\n' >"$TMP/twice.off"
+expect 0 "cross or overlap" -- info "$TMP/twice.off"
+[[ "$(value duplicate_triangles)" == "1" && "$(value self_intersections)" == "1" ]] \
+  || fail "twice: duplicate_triangles=$(value duplicate_triangles) self_intersections=$(value self_intersections)"
+expect 0 "" -- info "$TMP/crossing.off"
+[[ "$(value duplicate_triangles)" == "0" ]] || fail "crossing: duplicate_triangles=$(value duplicate_triangles)"
+
 # --report (shared by every subcommand): the same figures as JSON.
 expect 0 "" -- info "$TMP/sheet.off" --report "$TMP/info.json"
 python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))

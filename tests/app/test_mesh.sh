@@ -220,6 +220,9 @@ expect 2 "unknown output format" -- mesh "$TMP/cube.off" -o "$TMP/x.xyz"
 expect 2 "" -- mesh "$TMP/cube.off"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
+# A cube with its triangle 3 listed again (reversed) at the end: refused as a repeat, named.
+{ sed -n '1,2p' "$TMP/cube.off" | sed '2s/^8 12/8 13/'; sed -n '3,$p' "$TMP/cube.off"; sed -n '14p' "$TMP/cube.off" | awk '{print $1, $4, $3, $2}'; } >"$TMP/repeat.off"
+expect 2 "lists a triangle more than once: triangles 3 and 12" -- mesh "$TMP/repeat.off" -o "$TMP/x.off"
 # A tetrahedron 1e-15 thick: its apex nearly touches the opposite face (refinement ran for minutes
 # towards the vertex cap); refused like a crossing, naming the vertex.
 printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 1e-15\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$TMP/flat.off"

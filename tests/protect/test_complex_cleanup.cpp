@@ -199,6 +199,24 @@ TEST_CASE("triangles with a repeated vertex, and repeated vertices, change nothi
   CHECK(after.cleanup.welded_vertices == 1);
 }
 
+TEST_CASE("triangles listed more than once are counted, through welded vertices and either winding") {
+  io::TriangleSoup s = io::make_cube(3);
+  CHECK(build_complex(s).cleanup.duplicate_triangles == 0);
+  CHECK(build_complex(s).cleanup.first_duplicate[0] == protect::kNoIndex);
+  const auto n = static_cast<std::uint32_t>(s.triangles.size());
+  const auto t5 = s.triangles[5], t9 = s.triangles[9];
+  s.triangles.push_back({t5[2], t5[1], t5[0]});  // n: triangle 5 again, reversed
+  s.triangles.push_back(t9);                     // n + 1, n + 2: triangle 9 twice more
+  s.triangles.push_back({t9[1], t9[2], t9[0]});
+  // n + 3: triangle 9 once more through a copy of one of its vertices (welded).
+  s.vertices.push_back(s.vertices[t9[0]]);
+  s.triangles.push_back({static_cast<std::uint32_t>(s.vertices.size() - 1), t9[1], t9[2]});
+  const Complex c = build_complex(s);
+  CHECK(c.cleanup.duplicate_triangles == 4);  // one repeat of 5, three of 9
+  const auto [first, again] = c.cleanup.first_duplicate;
+  CHECK(((first == 5 && again == n) || (first == 9 && again >= n + 1 && again <= n + 3)));
+}
+
 TEST_CASE("inconsistently oriented triangles make no false features") {
   io::TriangleSoup s = io::make_square_sheet(6);
   for (std::size_t t = 0; t < s.triangles.size(); t += 3) std::swap(s.triangles[t][0], s.triangles[t][1]);
