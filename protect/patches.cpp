@@ -37,8 +37,15 @@ void find_pinches(Complex& complex, const VertexFans& fans, const kernel::LargeV
   std::vector<std::pair<std::uint32_t, std::uint32_t>> by_patch;  // (patch, triangle)
   for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
     if (complex.edge_feature[e] == 0) continue;
+    const auto faces = complex.edge_triangle_ids(e);
+    if (faces.size() == 2) {  // most feature edges (a crease): no list, no sort
+      if (complex.triangle_patch[faces[0]] == complex.triangle_patch[faces[1]])
+        for (const std::uint32_t v : complex.edges[e])
+          patch_fans.unite(fans.corner_wedge[corner_at(faces[0], v)], fans.corner_wedge[corner_at(faces[1], v)]);
+      continue;
+    }
     by_patch.clear();
-    for (const std::uint32_t t : complex.edge_triangle_ids(e)) by_patch.emplace_back(complex.triangle_patch[t], t);
+    for (const std::uint32_t t : faces) by_patch.emplace_back(complex.triangle_patch[t], t);
     std::sort(by_patch.begin(), by_patch.end());
     for (const std::uint32_t v : complex.edges[e])
       for (std::size_t i = 1, first = 0; i < by_patch.size(); ++i) {
