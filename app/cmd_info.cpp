@@ -67,7 +67,8 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   // angle), hence the only one --max-seconds polls.
   const protect::InputDefects defects =
       protect::find_input_defects(complex, kernel::AabbTree(complex.vertices, complex.triangles),
-                                  kSelfIntersectionsCounted, 0, time_limit.poll());
+                                  kSelfIntersectionsCounted, 0, time_limit.poll(),
+                                  protect::CrossingPairs::first_found);  // only counted here
   const std::size_t crossing = defects.crossing.size();
   report("self_intersections", crossing);  // pairs of triangles, at most kSelfIntersectionsCounted
   // The sharpest edge between two triangles (input_defects.h).

@@ -125,7 +125,7 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 }
 
 InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& tree, std::size_t max_pairs,
-                                double tolerance, const std::function<bool()>& stop) {
+                                double tolerance, const std::function<bool()>& stop, CrossingPairs which) {
   InputDefects found;
   const bool near = tolerance > 0;  // false for NaN too
   if (complex.triangles.empty() || (max_pairs == 0 && !near)) return found;
@@ -201,6 +201,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       }
   }
   struct Stopped {};  // thrown out of the descent when `stop` says so
+  struct Enough {};   // thrown when max_pairs were found and any of them will do
   // Each fan's box: of the triangles it is the first fan of.
   std::vector<kernel::Box3> fan_box(fans.size());
   for (std::uint32_t t = 0; t < fan_of.size(); ++t)
@@ -311,6 +312,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
     if (!triangles_intersect_improperly(a, complex.triangles[pair[0]], b, complex.triangles[pair[1]])) return;
     pairs.push_back(pair);
     std::push_heap(pairs.begin(), pairs.end());
+    if (which == CrossingPairs::first_found && pairs.size() == max_pairs && !near) throw Enough{};
     if (pairs.size() > max_pairs) {
       std::pop_heap(pairs.begin(), pairs.end());
       pairs.pop_back();
@@ -419,6 +421,7 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
       near ? tolerance : 0, in_a_fan);
   } catch (const Stopped&) {
     found.stopped = true;
+  } catch (const Enough&) {
   }
   std::sort_heap(pairs.begin(), pairs.end());
   return found;

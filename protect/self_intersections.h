@@ -72,12 +72,22 @@ std::optional<std::array<std::uint32_t, 2>> find_near_contact(const Complex& com
 /// across fans, and before each fan is turned towards another); when it answers true the search
 /// ends there with `stopped` set and what it found so far (a cone of 20,000 rim points on a base
 /// triangulated in one strip of thin triangles makes 10^8 pairs, seconds).
+/// `which`: CrossingPairs::smallest keeps the max_pairs smallest crossing pairs (what a scan in
+/// order would give, whatever order the descent finds them in: a caller naming pairs); with
+/// CrossingPairs::first_found the search ends as soon as max_pairs crossing pairs are found, any
+/// of them, for a caller that reports only how many there are up to max_pairs (that count is
+/// the same either way). The smallest pairs cost every box-overlapping pair even once max_pairs
+/// are found: a triangle listed 200,000 times makes 2*10^10 pairs of copies, all crossing, while
+/// the first found are found at once. (With a positive tolerance the search still runs to its
+/// end, for the near contact.)
+enum class CrossingPairs { smallest, first_found };
 struct InputDefects {
   std::vector<std::array<std::uint32_t, 2>> crossing;
   std::optional<std::array<std::uint32_t, 2>> near_contact;
   bool stopped = false;
 };
 InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& tree, std::size_t max_pairs,
-                                double tolerance, const std::function<bool()>& stop = {});
+                                double tolerance, const std::function<bool()>& stop = {},
+                                CrossingPairs which = CrossingPairs::smallest);
 
 }  // namespace delpsc::protect

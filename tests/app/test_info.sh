@@ -27,6 +27,17 @@ printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n3 2 1 0\n' >"$
 expect 0 "cross or overlap" -- info "$TMP/twice.off"
 [[ "$(value duplicate_triangles)" == "1" && "$(value self_intersections)" == "1" ]] \
   || fail "twice: duplicate_triangles=$(value duplicate_triangles) self_intersections=$(value self_intersections)"
+# A triangle listed 100,000 times: info counts its pairs up to the cap and stops looking (it
+# went through every one of the 5*10^9 pairs of copies, past any time limit).
+python3 - "$TMP/copies.off" <<'PY'
+import sys
+n = 100000
+with open(sys.argv[1], "w") as f:
+    f.write(f"OFF\n4 {n + 3} 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n" + "3 0 2 1\n" * n)
+PY
+expect 0 "at least 100 pair(s)" -- info "$TMP/copies.off" --max-seconds 60
+[[ "$(value duplicate_triangles)" == "99999" && "$(value self_intersections)" == "100" && "$(value stopped)" == "no" ]] \
+  || fail "copies: duplicate_triangles=$(value duplicate_triangles) self_intersections=$(value self_intersections) stopped=$(value stopped)"
 expect 0 "" -- info "$TMP/crossing.off"
 [[ "$(value duplicate_triangles)" == "0" ]] || fail "crossing: duplicate_triangles=$(value duplicate_triangles)"
 

@@ -197,6 +197,42 @@ TEST_CASE("a cube with a sheet through it: every crossing pair found, and the ca
   CHECK(std::equal(capped.begin(), capped.end(), pairs.begin()));
 }
 
+TEST_CASE("crossing pairs first found: real crossings, as many as the smallest up to the cap") {
+  io::TriangleSoup soup = io::make_cube(4);
+  const auto base = static_cast<std::uint32_t>(soup.vertices.size());
+  for (const Vec3& p : {Vec3(-1, -1, 0.3), Vec3(2, -1, 0.3), Vec3(2, 2, 0.3), Vec3(-1, 2, 0.3)}) soup.vertices.push_back(p);
+  soup.triangles.push_back({base, base + 1, base + 2});
+  soup.triangles.push_back({base, base + 2, base + 3});
+  const protect::Complex complex = protect::build_complex(soup);
+  const kernel::AabbTree tree(complex.vertices, complex.triangles);
+  const auto all = protect::find_self_intersections(complex, 1000);
+  REQUIRE(all.size() >= 32);
+  for (const std::size_t cap : {std::size_t{1}, std::size_t{5}, all.size(), all.size() + 7}) {
+    CAPTURE(cap);
+    const protect::InputDefects any =
+        protect::find_input_defects(complex, tree, cap, 0, {}, protect::CrossingPairs::first_found);
+    CHECK_FALSE(any.stopped);
+    CHECK(any.crossing.size() == std::min(cap, all.size()));
+    CHECK(std::is_sorted(any.crossing.begin(), any.crossing.end()));
+    for (const auto& pair : any.crossing) CHECK(std::binary_search(all.begin(), all.end(), pair));
+  }
+  // A triangle listed 20,000 times: 2*10^8 pairs of copies, every one crossing; the first found
+  // end the search, long before a `stop` that answers true from its 257th question (~10^6
+  // box-overlapping pairs; the smallest pairs would need them all).
+  io::TriangleSoup repeated;
+  repeated.vertices = {o, x, y, z};
+  repeated.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  repeated.triangles.insert(repeated.triangles.end(), 20000, {0, 2, 1});
+  const protect::Complex copies = protect::build_complex(repeated);
+  std::size_t asked = 0;
+  const protect::InputDefects first = protect::find_input_defects(
+      copies, kernel::AabbTree(copies.vertices, copies.triangles), 100, 0, [&] { return ++asked > 256; },
+      protect::CrossingPairs::first_found);
+  CHECK_FALSE(first.stopped);
+  CHECK(first.crossing.size() == 100);
+  for (const auto& [s, t] : first.crossing) CHECK((s >= 3 && t >= 3));  // copies of the base
+}
+
 TEST_CASE("near contacts: the smallest (vertex, triangle) pair within the tolerance, as brute force finds it") {
   // Random small triangles in the unit cube (they also cross: find_input_defects reports both
   // kinds from one descent, each as its own function does). Brute force: every used vertex
