@@ -91,8 +91,11 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   if (!complex.pinches.empty() && !g.quiet)
     std::fprintf(stderr,
                  "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex (at --angle %g); "
-                 "`delpsc mesh` refuses such a model\n",
-                 o.input.c_str(), complex.pinches.size(), o.angle);
+                 "`delpsc mesh` refuses such a model; %s\n",
+                 o.input.c_str(), complex.pinches.size(), o.angle,
+                 pinch_advice(pinch_free_angle(model.soup, complex_options(o.angle, protect::ComplexOptions{}.corner_angle_degrees),
+                                               time_limit.poll()))
+                     .c_str());
   report("stopped", defects.stopped ? "max-seconds" : "no");
   if (defects.stopped)
     throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() +

@@ -111,7 +111,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   progress.phase("input check");
   reject_self_intersections(domain.complex(), domain.tree(), o.input, &time_limit);
   reject_empty_complex(domain.complex(), model, o.input, "mesh");
-  reject_pinched_patches(domain.complex(), o.input);
+  reject_pinched_patches(domain.complex(), model.soup, complex_options(o.angle, o.corner_angle), o.input, &time_limit);
   if (!g.quiet) {
     if (const std::string fold = fold_warning(domain.complex(), sharpest_fold(domain.complex()), o.input); !fold.empty())
       std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());

@@ -9,10 +9,15 @@
 #include <delpsc/kernel/aabb_tree.h>
 #include <delpsc/protect/complex.h>
 #include <delpsc/protect/self_intersections.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "command.h"
 #include "file_frame.h"
@@ -61,11 +66,16 @@ inline io::ReadResult load_model(const std::string& path, const GlobalOptions& g
 /// angles of the command line; a bad user polyline or similar becomes a bad-input exit naming
 /// the file. Flat caps healed on the way (protect::CleanupReport) are a warning unless -q: the
 /// surface meshed differs from the file's by their heights.
-inline protect::Complex load_complex(const io::ReadResult& model, const std::string& path, double feature_angle,
-                                     double corner_angle, const GlobalOptions& g) {
+inline protect::ComplexOptions complex_options(double feature_angle, double corner_angle) {
   protect::ComplexOptions options;
   options.feature_angle_degrees = feature_angle;
   options.corner_angle_degrees = corner_angle;
+  return options;
+}
+
+inline protect::Complex load_complex(const io::ReadResult& model, const std::string& path, double feature_angle,
+                                     double corner_angle, const GlobalOptions& g) {
+  const protect::ComplexOptions options = complex_options(feature_angle, corner_angle);
   protect::Complex complex;
   try {
     complex = protect::build_complex(model.soup, options);
@@ -179,22 +189,68 @@ inline void reject_self_intersections(const protect::Complex& complex, const std
   reject_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), path, limit);
 }
 
+/// The feature angles pinch_free_angle tries, in degrees.
+inline constexpr std::array<double, 10> kPinchFreeAngles = {15, 30, 45, 60, 75, 90, 105, 120, 135, 150};
+
+/// When a model's complex at `options` has pinched patches: the feature angle of kPinchFreeAngles
+/// nearest options.feature_angle_degrees (the larger of two as near: fewer curves) at which it
+/// has none, or nullopt. A pinch made by the curves - a patch reaching round two small patches
+/// that the angle cut out at one vertex (libcgal-demo's armadillo and femur at the default 60
+/// degrees) - goes at another angle; one in the geometry (a sheet touching itself) at none. One
+/// build_complex per angle tried (a few ms on a model of 10^4 triangles), only on the way to a
+/// refusal; `stop` (--max-seconds) is asked before each.
+inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, protect::ComplexOptions options,
+                                              const std::function<bool()>& stop = {}) {
+  std::array<double, kPinchFreeAngles.size()> order = kPinchFreeAngles;
+  const double given = options.feature_angle_degrees;
+  std::sort(order.begin(), order.end(), [given](double a, double b) {
+    return std::pair(std::abs(a - given), -a) < std::pair(std::abs(b - given), -b);
+  });
+  for (const double angle : order) {
+    if (angle == given) continue;
+    if (stop && stop()) return std::nullopt;
+    options.feature_angle_degrees = angle;
+    try {
+      if (protect::build_complex(soup, options).pinches.empty()) return angle;
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;  // the model itself is bad; the complex at the given angle said so first
+    }
+  }
+  return std::nullopt;
+}
+
+/// What to do about pinched patches, given pinch_free_angle's answer.
+inline std::string pinch_advice(std::optional<double> free_angle) {
+  char advice[200];
+  if (free_angle)
+    std::snprintf(advice, sizeof advice, "at --angle %g the feature curves divide the model without a pinch", *free_angle);
+  else
+    std::snprintf(advice, sizeof advice, "no --angle from %g to %g degrees removes them: separate the sheets or divide the patch there",
+                  kPinchFreeAngles.front(), kPinchFreeAngles.back());
+  return advice;
+}
+
 /// A bad-input exit when a patch touches itself only at a vertex (protect::Complex::pinches):
 /// such a patch is no 2-manifold with boundary there, its umbrella can never be one disk (D1),
 /// and refinement would shrink the balls around the vertex until they hit the floor. Found by
 /// `delpsc mesh` in 0.2 s instead, e.g. on the holes of libcgal-demo's elephant-with-holes.off.
-inline void reject_pinched_patches(const protect::Complex& complex, const std::string& path) {
+/// The message ends with pinch_advice: `options` are the complex's, `soup` the model it was
+/// built from (see pinch_free_angle).
+inline void reject_pinched_patches(const protect::Complex& complex, const io::TriangleSoup& soup,
+                                   const protect::ComplexOptions& options, const std::string& path,
+                                   const TimeLimit* limit = nullptr) {
   if (complex.pinches.empty()) return;
   const auto [v, patch] = complex.pinches.front();
   const Vec3 p = in_file_frame(complex.vertices[v]);
-  char message[800];
+  const std::string advice = pinch_advice(pinch_free_angle(soup, options, limit ? limit->poll() : std::function<bool()>{}));
+  char message[1000];
   std::snprintf(message, sizeof message,
                 "%s: patch %u touches itself only at the vertex (%.9g, %.9g, %.9g)%s: two fans of its triangles "
                 "meet there without sharing an edge, so the patch is no surface with boundary there and the disk "
-                "condition can never hold; separate the sheets, or divide the patch with feature curves (a smaller "
-                "--angle may do it); `delpsc info` counts them",
+                "condition can never hold; %s; `delpsc info` counts them",
                 path.c_str(), patch, p.x(), p.y(), p.z(),
-                complex.pinches.size() > 1 ? (", and at " + std::to_string(complex.pinches.size() - 1) + " more").c_str() : "");
+                complex.pinches.size() > 1 ? (", and at " + std::to_string(complex.pinches.size() - 1) + " more").c_str() : "",
+                advice.c_str());
   throw Failure{kBadInput, message};
 }
 

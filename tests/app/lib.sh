@@ -94,6 +94,34 @@ write_thin_torus() {
       print 3, a, b, c; print 3, a, c, d } }' >"$1"
 }
 
+# A flat 3x3 grid sheet (two triangles a square) whose two opposite triangles at the vertex
+# (1, 1) are tents: each replaced by three faces rising at 70 degrees to an apex over its
+# incentre. At --angle 60 every tent face is a patch of its own and the flat patch reaches round
+# both tents to touch itself at (1, 1) (a pinch); at --angle 75 the tents join the flat patch.
+write_tented_grid() {
+  python3 - "$1" <<'PY'
+import math, sys
+V = [(i, j, 0.0) for j in range(4) for i in range(4)]
+T = []
+for j in range(3):
+    for i in range(3):
+        a = j * 4 + i
+        for t, tent in (((a, a + 1, a + 5), (i, j) == (0, 0)), ((a, a + 5, a + 4), (i, j) == (1, 1))):
+            if not tent:
+                T.append(t)
+                continue
+            P = [V[k] for k in t]
+            L = [math.dist(P[(k + 1) % 3], P[(k + 2) % 3]) for k in range(3)]
+            centre = [sum(L[k] * P[k][x] for k in range(3)) / sum(L) for x in range(2)]
+            inradius = 1 / sum(L)  # twice the area (1/2) over the perimeter
+            V.append((centre[0], centre[1], inradius * math.tan(math.radians(70))))
+            T += [(t[0], t[1], len(V) - 1), (t[1], t[2], len(V) - 1), (t[2], t[0], len(V) - 1)]
+with open(sys.argv[1], "w") as f:
+    f.write(f"OFF\n{len(V)} {len(T)} 0\n" + "".join("%.17g %.17g %.17g\n" % v for v in V))
+    f.write("".join("3 %d %d %d\n" % t for t in T))
+PY
+}
+
 write_cube() {
   cat >"$1" <<'MODEL'
 OFF
