@@ -322,7 +322,7 @@ int run(const MeshCommandOptions& o, const GlobalOptions& g) {
   } else {
     report_topology(compare_topology(check, domain.complex()), g);
   }
-  report_complex_topology(refine::complex_topology(mesh.triangles), refine::complex_topology(domain.complex().triangles),
+  report_complex_topology(refine::complex_topology(mesh.triangles), refine::complex_topology(domain.complex()),
                           g);
   {
     std::vector<refine::DiskFailure> kinds;

@@ -65,27 +65,16 @@ std::size_t edge_components(const std::vector<std::array<std::uint32_t, 2>>& edg
   return static_cast<std::size_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
 }
 
-}  // namespace
-
-ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> triangles) {
+// The figures of `triangles` (vertex ids < vertex_bound, none repeated in a triangle), whose
+// undirected edges `for_each_edge(visit)` lists, each once and in any order, as
+// visit(lo, hi, degree, uses): the edge's ends (lo < hi), its number of triangles, and for an
+// edge of two, `uses` its two (triangle, runs from lo to hi) pairs.
+using EdgeSide = std::pair<std::uint32_t, bool>;
+template <class ForEachEdge>
+ComplexTopology figures(std::span<const std::array<std::uint32_t, 3>> triangles, std::uint32_t vertex_bound,
+                        ForEachEdge for_each_edge) {
   ComplexTopology out;
   out.triangles = triangles.size();
-  if (triangles.empty()) return out;
-  std::uint32_t vertex_bound = 0;
-  kernel::LargeVector<EdgeUse> uses;
-  uses.reserve(3 * triangles.size());
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    const auto& v = triangles[t];
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
-      throw std::invalid_argument("complex_topology: triangle " + std::to_string(t) + " repeats a vertex");
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = v[k], b = v[(k + 1) % 3];
-      uses.push_back({std::min(a, b), std::max(a, b), t, a < b});
-      vertex_bound = std::max(vertex_bound, a + 1);
-    }
-  }
-  sort_edge_records(uses, vertex_bound, [](const EdgeUse& x, const EdgeUse& y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
-
   UnionFind vertices(vertex_bound);  // components: every triangle joins its vertices
   for (const auto& v : triangles) vertices.join(v[0], v[1]), vertices.join(v[1], v[2]);
   kernel::LargeVector<std::uint8_t> used(vertex_bound, 0);
@@ -101,17 +90,13 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
   UnionFind sheets(triangles.size());
   kernel::LargeVector<std::uint8_t> conflict(triangles.size(), 0);
   std::vector<std::array<std::uint32_t, 2>> boundary, singular;
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
+  for_each_edge([&](std::uint32_t lo, std::uint32_t hi, std::size_t degree, const std::array<EdgeSide, 2>& uses) {
     ++out.edges;
-    const std::size_t degree = j - i;
-    if (degree == 1) boundary.push_back({uses[i].lo, uses[i].hi});
-    if (degree >= 3) singular.push_back({uses[i].lo, uses[i].hi});
-    if (degree == 2 && !sheets.join(uses[i].triangle, uses[i + 1].triangle, uses[i].forward == uses[i + 1].forward))
-      conflict[uses[i].triangle] = 1;
-    i = j;
-  }
+    if (degree == 1) boundary.push_back({lo, hi});
+    if (degree >= 3) singular.push_back({lo, hi});
+    if (degree == 2 && !sheets.join(uses[0].first, uses[1].first, uses[0].second == uses[1].second))
+      conflict[uses[0].first] = 1;
+  });
   out.euler = static_cast<long>(out.vertices) - static_cast<long>(out.edges) + static_cast<long>(out.triangles);
   out.boundary_loops = edge_components(boundary, vertex_bound);
   out.singular_curves = edge_components(singular, vertex_bound);
@@ -124,6 +109,55 @@ ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> t
   out.sheets = static_cast<std::size_t>(std::count(sheet_root.begin(), sheet_root.end(), 1));
   out.non_orientable_sheets = static_cast<std::size_t>(std::count(sheet_conflict.begin(), sheet_conflict.end(), 1));
   return out;
+}
+
+}  // namespace
+
+ComplexTopology complex_topology(std::span<const std::array<std::uint32_t, 3>> triangles) {
+  if (triangles.empty()) return {};
+  std::uint32_t vertex_bound = 0;
+  kernel::LargeVector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    const auto& v = triangles[t];
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+      throw std::invalid_argument("complex_topology: triangle " + std::to_string(t) + " repeats a vertex");
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+      uses.push_back({std::min(a, b), std::max(a, b), t, a < b});
+      vertex_bound = std::max(vertex_bound, a + 1);
+    }
+  }
+  sort_edge_records(uses, vertex_bound, [](const EdgeUse& x, const EdgeUse& y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
+  return figures(triangles, vertex_bound, [&](const auto& visit) {
+    for (std::size_t i = 0; i < uses.size();) {
+      std::size_t j = i;
+      while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
+      visit(uses[i].lo, uses[i].hi, j - i,
+            std::array<EdgeSide, 2>{EdgeSide{uses[i].triangle, uses[i].forward},
+                                    EdgeSide{uses[i + 1 < j ? i + 1 : i].triangle, uses[i + 1 < j ? i + 1 : i].forward}});
+      i = j;
+    }
+  });
+}
+
+ComplexTopology complex_topology(const protect::Complex& complex) {
+  if (complex.triangles.empty()) return {};
+  const auto runs_forward = [&](std::uint32_t t, std::uint32_t lo, std::uint32_t hi) {
+    const auto& v = complex.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      if (v[k] == lo) return v[(k + 1) % 3] == hi;
+    return false;  // unreachable: lo is a corner of every triangle of its edge
+  };
+  return figures(complex.triangles, static_cast<std::uint32_t>(complex.vertices.size()), [&](const auto& visit) {
+    for (std::uint32_t e = 0; e < complex.edges.size(); ++e) {
+      const auto [lo, hi] = complex.edges[e];
+      const auto around = complex.edge_triangle_ids(e);
+      const std::uint32_t t0 = around[0], t1 = around.size() > 1 ? around[1] : around[0];
+      visit(lo, hi, around.size(),
+            std::array<EdgeSide, 2>{EdgeSide{t0, runs_forward(t0, lo, hi)}, EdgeSide{t1, runs_forward(t1, lo, hi)}});
+    }
+  });
 }
 
 std::vector<std::string> topology_differences(const ComplexTopology& output, const ComplexTopology& input) {

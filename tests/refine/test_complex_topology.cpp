@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -136,6 +137,52 @@ TEST_CASE("generated models") {
   const std::vector<std::string> d = refine::topology_differences(torus, sphere);
   REQUIRE(d.size() == 1);
   CHECK(d[0] == "Euler characteristic: output 0, input 2");
+}
+
+namespace {
+
+// A Möbius strip in space: n quads around a circle of radius 1, the strip's width turning by a
+// half turn (strip() with coordinates).
+io::TriangleSoup moebius_soup(std::uint32_t n) {
+  io::TriangleSoup soup;
+  const double pi = 3.14159265358979323846;
+  for (int side : {1, -1})
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double u = 2 * pi * i / n, w = 0.2 * side;
+      soup.vertices.push_back(
+          {(1 + w * std::cos(u / 2)) * std::cos(u), (1 + w * std::cos(u / 2)) * std::sin(u), w * std::sin(u / 2)});
+    }
+  for (const auto& t : strip(n, true)) soup.triangles.push_back(t);
+  return soup;
+}
+
+}  // namespace
+
+TEST_CASE("read off a complex's edge table: the same figures as from its triangles") {
+  const std::vector<io::TriangleSoup> soups = {
+      io::make_box_with_fin(4), io::make_torus(1, 0.35, 16, 8), io::make_sphere(4), io::make_book(4, 3),
+      io::make_touching_spheres(4), io::make_square_sheet(3), io::make_cone_on_sheet(10, 24, 4),
+      io::make_capped_cylinder(), moebius_soup(12)};
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    CAPTURE(i);
+    const protect::Complex complex = protect::build_complex(soups[i]);
+    const refine::ComplexTopology a = refine::complex_topology(complex), b = refine::complex_topology(complex.triangles);
+    CHECK(a.vertices == b.vertices);
+    CHECK(a.edges == b.edges);
+    CHECK(a.triangles == b.triangles);
+    CHECK(a.components == b.components);
+    CHECK(a.euler == b.euler);
+    CHECK(a.boundary_loops == b.boundary_loops);
+    CHECK(a.singular_curves == b.singular_curves);
+    CHECK(a.sheets == b.sheets);
+    CHECK(a.non_orientable_sheets == b.non_orientable_sheets);
+  }
+  // Not a vacuous comparison: the Möbius strip is told from an annulus by the complex's figures.
+  const refine::ComplexTopology moebius = refine::complex_topology(protect::build_complex(moebius_soup(12)));
+  CHECK(moebius.non_orientable_sheets == 1);
+  CHECK(moebius.boundary_loops == 1);
+  CHECK(refine::complex_topology(protect::build_complex(io::make_book(4, 3))).singular_curves == 1);
+  CHECK(refine::complex_topology(protect::Complex{}).triangles == 0);
 }
 
 TEST_CASE("a triangle repeating a vertex is refused") {
