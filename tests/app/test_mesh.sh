@@ -244,14 +244,19 @@ expect 2 "patch 0 touches itself only at the vertex (1, 1, 0)" -- mesh "$TMP/pin
 # That pinch is in the surface: no feature angle removes it, and the message says so.
 grep -qF "no --angle from 15 to 150 degrees removes them" "$TMP/err" || fail "pinched: advice: $(cat "$TMP/err")"
 expect 0 "" -- info "$TMP/pinched.off"
-[[ "$(value pinched_vertices)" == "1" ]] || fail "pinched: pinched_vertices=$(value pinched_vertices)"
+[[ "$(value pinched_vertices)" == "1" && "$(value pinch_free_angle)" == "none" ]] \
+  || fail "pinched: pinched_vertices=$(value pinched_vertices) pinch_free_angle=$(value pinch_free_angle)"
 # A pinch made by the curves (libcgal-demo's armadillo and femur at the default angle): the
 # refusal names an angle without one, and the model meshes there (the old advice, a smaller
 # --angle, made more curves and more pinches on those two).
 write_tented_grid "$TMP/tents.off"
 expect 2 "at --angle 75 the feature curves divide the model without a pinch" -- mesh "$TMP/tents.off" -o "$TMP/x.off"
 expect 0 "at --angle 75 the feature curves divide the model without a pinch" -- info "$TMP/tents.off"
-[[ "$(value pinched_vertices)" == "1" ]] || fail "tents: pinched_vertices=$(value pinched_vertices)"
+[[ "$(value pinched_vertices)" == "1" && "$(value pinch_free_angle)" == "75" ]] \
+  || fail "tents: pinched_vertices=$(value pinched_vertices) pinch_free_angle=$(value pinch_free_angle)"
+expect 0 "" -- info "$TMP/tents.off" --angle 75
+[[ "$(value pinched_vertices)" == "0" && "$(value pinch_free_angle)" == "-" ]] \
+  || fail "tents at 75: pinched_vertices=$(value pinched_vertices) pinch_free_angle=$(value pinch_free_angle)"
 expect 0 "" -- mesh "$TMP/tents.off" -o "$TMP/tents.mesh.off" --size 2% --angle 75 --check
 [[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" ]] || fail "tents at 75: g1=$(value g1) topology_ok=$(value topology_ok)"
 # A size the job could never finish at is refused at once, not after minutes at a cap.
