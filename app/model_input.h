@@ -169,8 +169,14 @@ inline void reject_self_intersections(const protect::Complex& complex, const ker
     return;
   }
   const auto [s, t] = pairs.front();
-  Vec3 c = Vec3::Zero();
-  for (const std::uint32_t v : complex.triangles[s]) c += complex.vertices[v] / 3;
+  const auto corners = [&](std::uint32_t k) {
+    const auto& tri = complex.triangles[k];
+    return std::array<Vec3, 3>{complex.vertices[tri[0]], complex.vertices[tri[1]], complex.vertices[tri[2]]};
+  };
+  // Where they meet (a centroid of a CAD triangle may be far from it), else s's centroid.
+  const std::array<Vec3, 3> cs = corners(s);
+  Vec3 c = protect::improper_contact_point(cs, complex.triangles[s], corners(t), complex.triangles[t])
+               .value_or((cs[0] + cs[1] + cs[2]) / 3);
   c = in_file_frame(c);
   char message[512];
   std::snprintf(message, sizeof message,

@@ -106,6 +106,41 @@ bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::arr
   }
 }
 
+std::optional<Vec3> improper_contact_point(const std::array<Vec3, 3>& a, const std::array<std::uint32_t, 3>& ia,
+                                           const std::array<Vec3, 3>& b, const std::array<std::uint32_t, 3>& ib) {
+  // The shared vertices, and the size against which "on" one of them is judged.
+  std::vector<Vec3> shared;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (ia[i] == ib[j]) shared.push_back(a[i]);
+  kernel::Box3 box;
+  for (const Vec3& p : a) box.extend(p);
+  for (const Vec3& p : b) box.extend(p);
+  const double tolerance = 1e-9 * box.diagonal();
+  const auto on_shared = [&](const Vec3& p) {
+    for (const Vec3& v : shared)
+      if ((p - v).norm() <= tolerance) return true;
+    if (shared.size() == 2) {  // on the shared edge
+      const Vec3 d = shared[1] - shared[0];
+      const double s = std::clamp((p - shared[0]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      return (shared[0] + s * d - p).norm() <= tolerance;
+    }
+    return false;
+  };
+  for (const auto& [x, y] : {std::pair{&a, &b}, std::pair{&b, &a}})
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &p = (*x)[(k + 1) % 3], &q = (*x)[(k + 2) % 3];
+      const kernel::TriangleHit hit = kernel::intersect_segment_triangle(p, q, (*y)[0], (*y)[1], (*y)[2]);
+      if (!hit) continue;
+      std::vector<Vec3> candidates{hit.point};
+      if (hit.contact == kernel::Contact::coplanar)
+        for (const double t : {hit.t_exit, (hit.t + hit.t_exit) / 2}) candidates.push_back(p + t * (q - p));
+      for (const Vec3& c : candidates)
+        if (!on_shared(c)) return c;
+    }
+  return std::nullopt;
+}
+
 std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex& complex, std::size_t max_pairs) {
   return find_self_intersections(complex, kernel::AabbTree(complex.vertices, complex.triangles), max_pairs);
 }

@@ -29,6 +29,15 @@ namespace delpsc::protect {
 bool triangles_intersect_improperly(const std::array<Vec3, 3>& a, const std::array<std::uint32_t, 3>& ia,
                                     const std::array<Vec3, 3>& b, const std::array<std::uint32_t, 3>& ib);
 
+/// For a pair for which triangles_intersect_improperly holds: a point where they meet other than
+/// at a vertex or edge they share, for a message to point at (rounded: within a few ulps of the
+/// contact, not exact), or nullopt when none is found that way (then, say, a centroid will do).
+/// Each triangle's edges against the other (intersect_segment_triangle): the crossing point, or
+/// for an edge lying in the other's plane, the ends and middle of the overlap, the first of them
+/// not on a shared vertex or edge (within 1e-9 of the pair's size).
+std::optional<Vec3> improper_contact_point(const std::array<Vec3, 3>& a, const std::array<std::uint32_t, 3>& ia,
+                                           const std::array<Vec3, 3>& b, const std::array<std::uint32_t, 3>& ib);
+
 /// Pairs of triangles of `complex` (indices into complex.triangles, first < second, sorted) that
 /// intersect improperly, at most `max_pairs` of them (the search stops there). An AABB tree finds
 /// the pairs whose boxes overlap; each is decided exactly, except the pairs inside a certified

@@ -34,8 +34,29 @@ namespace {
 using Tri = std::array<Vec3, 3>;
 using Ids = std::array<std::uint32_t, 3>;
 
+// For an improper pair: improper_contact_point gives a point of both triangles (up to rounding)
+// that is no shared vertex and, for two shared vertices, not on their edge.
+void check_contact_point(const Tri& a, const Ids& ia, const Tri& b, const Ids& ib) {
+  const std::optional<Vec3> p = protect::improper_contact_point(a, ia, b, ib);
+  REQUIRE(p.has_value());
+  const auto distance = [&](const Tri& t) { return (kernel::closest_point_on_triangle(*p, t[0], t[1], t[2]).point - *p).norm(); };
+  CHECK(distance(a) <= 1e-12);
+  CHECK(distance(b) <= 1e-12);
+  std::vector<Vec3> shared;
+  for (int i = 0; i < 3; ++i)
+    if (std::find(ib.begin(), ib.end(), ia[i]) != ib.end()) shared.push_back(a[i]);
+  if (shared.size() == 3) return;  // the same triangle twice: any point of it
+  for (const Vec3& v : shared) CHECK((*p - v).norm() > 1e-9);
+  if (shared.size() == 2) {
+    const Vec3 d = shared[1] - shared[0];
+    const double s = std::clamp((*p - shared[0]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    CHECK((shared[0] + s * d - *p).norm() > 1e-9);
+  }
+}
+
 // The answer for (a, b), checked to be the same for (b, a) and for every rotation of the
-// corners of either triangle (the test must not depend on the order it is given things in).
+// corners of either triangle (the test must not depend on the order it is given things in);
+// when they meet improperly, the contact point is checked for each order too.
 bool improper(const Tri& a, const Ids& ia, const Tri& b, const Ids& ib) {
   const bool answer = triangles_intersect_improperly(a, ia, b, ib);
   for (int r = 0; r < 3; ++r) {
@@ -46,6 +67,10 @@ bool improper(const Tri& a, const Ids& ia, const Tri& b, const Ids& ib) {
       const Ids ibs{ib[s], ib[(s + 1) % 3], ib[(s + 2) % 3]};
       CHECK(triangles_intersect_improperly(ar, iar, bs, ibs) == answer);
       CHECK(triangles_intersect_improperly(bs, ibs, ar, iar) == answer);
+      if (answer) {
+        check_contact_point(ar, iar, bs, ibs);
+        check_contact_point(bs, ibs, ar, iar);
+      }
     }
   }
   return answer;
