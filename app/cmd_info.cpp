@@ -52,6 +52,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("merged_vertices", model.report.merged_vertices);
   report("unused_vertices", model.report.unused_vertices);  // dropped, with a warning (load_model)
   report("zero_area_triangles", model.report.degenerate_triangles.size());
+  report("t_junctions", complex.cleanup.t_junctions);  // healed (complex.h)
   report("boundary_edges", boundary);
   report("non_manifold_edges", non_manifold);
   report("bbox", box);
@@ -88,12 +89,12 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   const auto sharpest = sharpest_fold(complex);
   report("sharpest_fold_degrees", sharpest ? sharpest->dihedral_degrees : 180.0);
   // Every warning line this command prints (or would print without -q): the reader's, then
-  // load_model's and load_complex's own (unused vertices, zero-area triangles, flat caps), then
+  // load_model's and load_complex's own (unused vertices, zero-area triangles, T-junctions, flat caps), then
   // the four below. Counting the reader's alone said 0 beside two printed lines.
   const std::string fold = fold_warning(complex, sharpest, o.input);
   const std::string unmarked = unmarked_sharp_edge_warning(complex, o.angle, o.input);
   report("warnings", model.report.warnings.size() + (model.report.unused_vertices > 0) +
-                         !model.report.degenerate_triangles.empty() + !complex.cleanup.flat_caps.empty() +
+                         !model.report.degenerate_triangles.empty() + !complex.cleanup.flat_caps.empty() + (complex.cleanup.t_junctions > 0) +
                          !fold.empty() + !unmarked.empty() + (crossing > 0) + !complex.pinches.empty());
   if (!fold.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
   if (!unmarked.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", unmarked.c_str());
@@ -128,7 +129,7 @@ Runner register_info(CLI::App& app) {
   app.footer(
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
-      "zero_area_triangles, boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
+      "zero_area_triangles, t_junctions (vertices exactly on another triangle's edge with no triangle between, healed by splitting it), boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
       "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), pinch_free_angle (with pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, or none; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }

@@ -82,6 +82,11 @@ inline protect::Complex load_complex(const io::ReadResult& model, const std::str
   } catch (const std::invalid_argument& e) {
     throw Failure{kBadInput, path + ": " + e.what()};
   }
+  if (!g.quiet && complex.cleanup.t_junctions > 0)
+    std::fprintf(stderr,
+                 "delpsc: warning: %s: %zu T-junction(s) healed: vertices lying exactly on another triangle's edge, "
+                 "with no triangle between; that triangle is split at them (the surface is unchanged)\n",
+                 path.c_str(), complex.cleanup.t_junctions);
   if (!g.quiet && !complex.cleanup.flat_caps.empty())
     std::fprintf(stderr,
                  "delpsc: warning: %s: %zu nearly flat triangle(s) (an angle within 1e-4 rad of 180 degrees; the "

@@ -29,6 +29,7 @@ Complex build_complex(const io::TriangleSoup& soup, const ComplexOptions& option
   complex.options = options;
   const kernel::LargeVector<std::uint32_t> canonical = detail::clean_triangles(soup, complex);
   detail::build_edge_table(complex);
+  complex.cleanup.t_junctions = detail::heal_t_junctions(complex);
   detail::find_duplicate_triangles(complex);
   detail::classify_feature_edges(complex, canonical);
   const detail::VertexFans fans = detail::find_patches(complex);

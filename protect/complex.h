@@ -12,6 +12,9 @@
 //     same way (the surface moves by its height): its two long edges would otherwise be curves
 //     leaving a corner at an angle no ball size can separate.
 //  2. edge_table.cpp: unique undirected edges, their incident triangles, each triangle's edges.
+//     t_junctions.cpp then heals T-junctions without a cap - a boundary edge with boundary edges
+//     running along it through vertices exactly on it - by splitting its triangle into a fan at
+//     those vertices (the same surface, now glued there), and the table is made again.
 //  3. feature_edges.cpp: an edge is a feature when it is a boundary edge (1 triangle), a
 //     non-manifold edge (3 or more), a manifold edge whose two triangle normals make an angle
 //     above the feature angle (consistently oriented first, so a badly oriented soup does not
@@ -115,8 +118,14 @@ struct CurveInterval {
 struct CleanupReport {
   std::size_t welded_vertices = 0;  ///< vertices merged into an earlier one with equal coordinates
   std::vector<std::uint32_t> zero_area_triangles;  ///< soup indices, increasing
-  std::size_t split_triangles = 0;  ///< triangles split at a cap's middle vertex (edge flips)
+  /// Triangles added by splitting: one for each cap flipped at its middle vertex, k for a
+  /// T-junction of k vertices (t_junctions)
+  std::size_t split_triangles = 0;
   std::size_t dropped_caps = 0;  ///< caps that could not be flipped (long edge not shared by exactly one other triangle)
+  /// Boundary edges with vertices exactly on them and no cap between (T-junctions): each one's
+  /// triangle split into a fan at those vertices, gluing it to the triangles along it
+  /// (t_junctions.cpp). The surface is unchanged.
+  std::size_t t_junctions = 0;
   /// soup indices, increasing: triangles whose largest angle is within 1e-4 radians of 180°,
   /// healed as caps (kept as they are where their long edge is not shared by exactly one other
   /// triangle)

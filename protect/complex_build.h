@@ -17,6 +17,12 @@ kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup,
 /// (edge_table.cpp)
 void build_edge_table(Complex& complex);
 
+/// Reads triangles and the edge table; splits each triangle whose boundary edge has other
+/// boundary edges running along it through vertices exactly on it (a T-junction) into a fan at
+/// those vertices, appending to triangles and triangle_source and rebuilding the edge table.
+/// Returns how many edges were healed. (t_junctions.cpp)
+std::size_t heal_t_junctions(Complex& complex);
+
 /// Reads triangles, triangle_source and the edge table; writes cleanup.duplicate_triangles and
 /// cleanup.first_duplicate. (duplicate_triangles.cpp)
 void find_duplicate_triangles(Complex& complex);

@@ -220,10 +220,19 @@ expect 2 "unknown output format" -- mesh "$TMP/cube.off" -o "$TMP/x.xyz"
 expect 2 "" -- mesh "$TMP/cube.off"
 write_crossing "$TMP/crossing.off"
 expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "$TMP/x.off"
-# The place named is where the two meet: a T-junction (vertex 4 on triangle 0's edge from 0 to
-# 2, no cap between) is refused at that vertex, not at triangle 0's centroid (2/3, 1/3, 0).
+# The place named is where the two meet: a triangle standing on another's interior with one
+# corner is refused at that corner, not at the other's centroid (1/3, 1/3, 0).
+printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0.25 0.25 0\n1 1 1\n0 1 1\n3 0 1 2\n3 3 4 5\n' >"$TMP/touch.off"
+expect 2 "cross or overlap near (0.25, 0.25, 0)" -- mesh "$TMP/touch.off" -o "$TMP/x.off"
+# A T-junction (vertex 4 on triangle 0's edge from 0 to 2, no cap between; a crack of zero
+# width, refused as touching before) is healed with a warning and meshes as the square it is.
 printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n3 0 1 2\n3 0 4 3\n3 4 2 3\n' >"$TMP/t_junction.off"
-expect 2 "cross or overlap near (0.5, 0.5, 0)" -- mesh "$TMP/t_junction.off" -o "$TMP/x.off"
+expect 0 "1 T-junction(s) healed" -- mesh "$TMP/t_junction.off" -o "$TMP/t_junction.mesh.off" --size 5% --check
+[[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" && "$(value patches)" == "1" && "$(value curves)" == "4" ]] \
+  || fail "T-junction: g1=$(value g1) topology_ok=$(value topology_ok) patches=$(value patches) curves=$(value curves)"
+expect 0 "" -- info "$TMP/t_junction.off"
+[[ "$(value t_junctions)" == "1" && "$(value boundary_edges)" == "4" && "$(value self_intersections)" == "0" ]] \
+  || fail "T-junction: t_junctions=$(value t_junctions) boundary_edges=$(value boundary_edges) self_intersections=$(value self_intersections)"
 # A cube with its triangle 3 listed again (reversed) at the end: refused as a repeat, named.
 { sed -n '1,2p' "$TMP/cube.off" | sed '2s/^8 12/8 13/'; sed -n '3,$p' "$TMP/cube.off"; sed -n '14p' "$TMP/cube.off" | awk '{print $1, $4, $3, $2}'; } >"$TMP/repeat.off"
 expect 2 "lists a triangle more than once: triangles 3 and 12" -- mesh "$TMP/repeat.off" -o "$TMP/x.off"

@@ -64,6 +64,26 @@ std::uint32_t insert_cap(io::TriangleSoup& s, const Shared& e, const Vec3& offse
   return static_cast<std::uint32_t>(s.triangles.size() - 1);
 }
 
+// Splits t2 (which runs b -> a) at the given points of the edge a-b, listed from a towards b,
+// with no cap: a T-junction of each point against t1's edge a-b. Returns their indices.
+std::vector<std::uint32_t> split_without_cap(io::TriangleSoup& s, const Shared& e, const std::vector<double>& at) {
+  std::vector<std::uint32_t> points;
+  for (const double f : at) {
+    points.push_back(static_cast<std::uint32_t>(s.vertices.size()));
+    s.vertices.push_back(s.vertices[e.a] + f * (s.vertices[e.b] - s.vertices[e.a]));  // exact: dyadic
+  }
+  std::uint32_t y = 0;
+  for (auto v : s.triangles[e.t2])
+    if (v != e.a && v != e.b) y = v;
+  // From b back to a, as t2 runs.
+  std::vector<std::uint32_t> path{e.b};
+  for (auto it = points.rbegin(); it != points.rend(); ++it) path.push_back(*it);
+  path.push_back(e.a);
+  s.triangles[e.t2] = {path[0], path[1], y};
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) s.triangles.push_back({path[i], path[i + 1], y});
+  return points;
+}
+
 void check_same_complex(const Complex& got, const Complex& want) {
   CHECK(got.corner_count() == want.corner_count());
   CHECK(got.curve_count() == want.curve_count());
@@ -116,24 +136,31 @@ TEST_CASE("a flat cap (height 1e-7 of its edge, out of the sheet) is healed like
   }
 }
 
-TEST_CASE("a zero-area cap along a cube edge keeps the edge one curve") {
-  io::TriangleSoup s = io::make_cube(2);
-  const Complex before = build_complex(s);
-  // An edge of the cube: both ends on the line y = 0, z = 0.
-  const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) {
-    return a.y() == 0 && a.z() == 0 && b.y() == 0 && b.z() == 0;
-  });
-  REQUIRE(e);
-  insert_cap(s, *e);
-  const Complex after = build_complex(s);
-  check_same_complex(after, before);
-  CHECK(after.cleanup.split_triangles == 1);
-  // The new midpoint lies inside a cube edge's curve, not at a corner.
-  const auto mid = static_cast<std::uint32_t>(s.vertices.size() - 1);
-  CHECK(after.vertex_corner[mid] == protect::kNoIndex);
-  int through = 0;
-  for (std::uint32_t k = 0; k < after.curve_count(); ++k) through += after.parameter_of_vertex(k, mid) ? 1 : 0;
-  CHECK(through == 1);
+TEST_CASE("a zero-area cap, or a T-junction without one, along a cube edge keeps the edge one curve") {
+  for (const bool with_cap : {true, false}) {
+    CAPTURE(with_cap);
+    io::TriangleSoup s = io::make_cube(2);
+    const Complex before = build_complex(s);
+    // An edge of the cube: both ends on the line y = 0, z = 0.
+    const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) {
+      return a.y() == 0 && a.z() == 0 && b.y() == 0 && b.z() == 0;
+    });
+    REQUIRE(e);
+    if (with_cap)
+      insert_cap(s, *e);
+    else
+      split_without_cap(s, *e, {0.5});
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.split_triangles == 1);
+    CHECK(after.cleanup.t_junctions == (with_cap ? 0 : 1));
+    // The new midpoint (the last vertex either way) lies inside a cube edge's curve, not at a corner.
+    const auto mid = static_cast<std::uint32_t>(s.vertices.size() - 1);
+    CHECK(after.vertex_corner[mid] == protect::kNoIndex);
+    int through = 0;
+    for (std::uint32_t k = 0; k < after.curve_count(); ++k) through += after.parameter_of_vertex(k, mid) ? 1 : 0;
+    CHECK(through == 1);
+  }
 }
 
 TEST_CASE("caps on the boundary leave the boundary where it was") {
@@ -176,6 +203,41 @@ TEST_CASE("caps on the boundary leave the boundary where it was") {
     CHECK(after.cleanup.split_triangles == 0);
     CHECK(after.cleanup.dropped_caps == 0);
   }
+}
+
+TEST_CASE("T-junctions without a cap are healed: the complex of the mesh without them") {
+  for (const std::vector<double>& at : {std::vector<double>{0.5}, std::vector<double>{0.25, 0.75}}) {
+    CAPTURE(at.size());
+    io::TriangleSoup s = io::make_square_sheet(4);
+    const Complex before = build_complex(s);
+    CHECK(before.cleanup.t_junctions == 0);  // a straight boundary's collinear vertices are none
+    const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
+    REQUIRE(e);
+    const std::size_t t1_source = e->t1;
+    split_without_cap(s, *e, at);
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.t_junctions == 1);
+    CHECK(after.cleanup.split_triangles == at.size());
+    CHECK(after.cleanup.zero_area_triangles.empty());
+    CHECK(after.triangles.size() == s.triangles.size() + at.size());  // t1 became a fan of 1 + k
+    CHECK(std::count(after.triangle_source.begin(), after.triangle_source.end(), t1_source) ==
+          static_cast<long>(1 + at.size()));
+    for (const auto& t : after.triangles) {  // the sheet's orientation (+z) kept by the fan
+      const Vec3 n = (after.vertices[t[1]] - after.vertices[t[0]]).cross(after.vertices[t[2]] - after.vertices[t[0]]);
+      CHECK(n.z() > 0);
+    }
+  }
+}
+
+TEST_CASE("a vertex near an edge but off it is no T-junction") {
+  io::TriangleSoup s = io::make_square_sheet(4);
+  const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
+  REQUIRE(e);
+  const std::uint32_t mid = split_without_cap(s, *e, {0.5}).front();
+  s.vertices[mid].y() += 0x1p-40;  // just off the line, into t1: the crack stays, and overlaps
+  const Complex after = build_complex(s);
+  CHECK(after.cleanup.t_junctions == 0);
 }
 
 TEST_CASE("triangles with a repeated vertex, and repeated vertices, change nothing") {
