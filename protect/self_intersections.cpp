@@ -215,7 +215,10 @@ InputDefects find_input_defects(const Complex& complex, const kernel::AabbTree& 
           p[k] > std::max({c[0][k], c[1][k], c[2][k]}) + tolerance)
         return;
     const double d2 = (p - kernel::closest_point_on_triangle(p, c[0], c[1], c[2]).point).squaredNorm();
-    if (d2 > 0 && d2 < tolerance2) closest = candidate;
+    // A distance that rounds to 0 is not a touch unless the exact test says so: a vertex 1.5e-17
+    // off a triangle's edge (an exporter's rounding) was let through as touching, no crossing
+    // was found either, and Protect spent 10 s and 1 GB on balls to separate the two curves.
+    if (d2 < tolerance2 && (d2 > 0 || !kernel::intersect_segment_triangle(p, p, c[0], c[1], c[2]))) closest = candidate;
   };
   // A certified fan's own pairs meet only at its centre or along an edge they share: none is
   // tested. Each triangle joins the first certified fan holding it (fan_of, a fan's index),

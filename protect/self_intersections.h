@@ -57,7 +57,8 @@ std::vector<std::array<std::uint32_t, 2>> find_self_intersections(const Complex&
                                                                   std::size_t max_pairs);
 
 /// A vertex of `complex` (one some triangle uses) and a triangle not incident to it at a distance
-/// below `tolerance` but not 0 (touching is a self-intersection above), or nullopt: a surface
+/// below `tolerance` but not exactly 0 (touching is a self-intersection above; a distance that
+/// rounds to 0 is decided by the exact test), or nullopt: a surface
 /// that comes that close to itself has a feature that small, which refinement resolves only by
 /// sampling at that scale (a tetrahedron 1e-15 thick refined for minutes towards the vertex
 /// cap). The smallest such (vertex, triangle) pair. Distances in floating point

@@ -88,7 +88,9 @@ std::optional<std::array<std::uint32_t, 2>> brute_near_contact(const protect::Co
       const Vec3& p = complex.vertices[v];
       const double d2 = (p - kernel::closest_point_on_triangle(p, complex.vertices[tri[0]], complex.vertices[tri[1]],
                                                                complex.vertices[tri[2]]).point).squaredNorm();
-      if (d2 > 0 && d2 < tolerance * tolerance) return std::array<std::uint32_t, 2>{v, t};
+      const bool on = d2 == 0 && kernel::intersect_segment_triangle(p, p, complex.vertices[tri[0]], complex.vertices[tri[1]],
+                                                                   complex.vertices[tri[2]]);
+      if (d2 < tolerance * tolerance && !on) return std::array<std::uint32_t, 2>{v, t};
     }
   return std::nullopt;
 }
@@ -256,6 +258,30 @@ TEST_CASE("crossing pairs first found: real crossings, as many as the smallest u
   CHECK_FALSE(first.stopped);
   CHECK(first.crossing.size() == 100);
   for (const auto& [s, t] : first.crossing) CHECK((s >= 3 && t >= 3));  // copies of the base
+}
+
+TEST_CASE("a vertex off a triangle's edge by less than a rounding is a near contact, not a touch") {
+  // From a sheet whose triangle was split at a point computed as a + (b - a) / 4 on an edge of
+  // non-dyadic ends (a T-junction an exporter's rounding broke): P lies 1.5e-17 off the line AB,
+  // so its computed distance to the triangle (A, B, C) is 0 while the exact test finds no contact.
+  // It was let through as touching and Protect then ran 10 s towards a million balls.
+  const Vec3 A(0.16666666666666666, 1, 0), B(0, 0.8333333333333334, 0), P(0.125, 0.9583333333333334, 0);
+  REQUIRE_FALSE(kernel::collinear(A.data(), B.data(), P.data()));
+  // C on the side of AB away from P, the second triangle's other corners on P's side.
+  const int side = kernel::orient2d(A.data(), B.data(), P.data(), 0, 1);
+  REQUIRE(side != 0);
+  const Vec3 away = side > 0 ? Vec3(0, 1, 0) : Vec3(0.5, 0.5, 0), toward = side > 0 ? Vec3(0.5, 0.5, 0) : Vec3(0, 1.2, 0);
+  REQUIRE(kernel::orient2d(A.data(), B.data(), away.data(), 0, 1) == -side);
+  REQUIRE(kernel::orient2d(A.data(), B.data(), toward.data(), 0, 1) == side);
+  io::TriangleSoup soup;
+  soup.vertices = {A, B, away, P, toward, toward + Vec3(0.01, 0.03, 0)};
+  soup.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const protect::Complex complex = protect::build_complex(soup);
+  CHECK((kernel::closest_point_on_triangle(P, A, B, away).point - P).squaredNorm() == 0);
+  CHECK(protect::find_self_intersections(complex).empty());
+  const auto near = protect::find_near_contact(complex, 1e-9);
+  REQUIRE(near);
+  CHECK((*near == std::array<std::uint32_t, 2>{3, 0}));
 }
 
 TEST_CASE("near contacts: the smallest (vertex, triangle) pair within the tolerance, as brute force finds it") {
