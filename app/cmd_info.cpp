@@ -62,15 +62,19 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("patches", complex.patch_count());
   report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
   // With pinches: the feature angle nearest --angle without one (mesh's refusal names it), or none.
+  // --max-seconds may end that search: "unknown" then, not "none".
+  bool pinch_search_stopped = false;
   const std::optional<double> free_angle =
       complex.pinches.empty()
           ? std::nullopt
           : pinch_free_angle(model.soup, complex_options(o.angle, protect::ComplexOptions{}.corner_angle_degrees),
-                             time_limit.poll());
+                             time_limit.poll(), &pinch_search_stopped);
   // A string in every case, so that the JSON report's type does not depend on the model.
   char angle[32] = "-";
   if (free_angle)
     std::snprintf(angle, sizeof angle, "%g", *free_angle);
+  else if (pinch_search_stopped)
+    std::snprintf(angle, sizeof angle, "unknown");
   else if (!complex.pinches.empty())
     std::snprintf(angle, sizeof angle, "none");
   report("pinch_free_angle", std::string(angle));
@@ -106,7 +110,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     std::fprintf(stderr,
                  "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex (at --angle %g); "
                  "`delpsc mesh` refuses such a model; %s\n",
-                 o.input.c_str(), complex.pinches.size(), o.angle, pinch_advice(free_angle).c_str());
+                 o.input.c_str(), complex.pinches.size(), o.angle, pinch_advice(free_angle, pinch_search_stopped).c_str());
   report("stopped", defects.stopped ? "max-seconds" : "no");
   if (defects.stopped)
     throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() +
@@ -130,7 +134,7 @@ Runner register_info(CLI::App& app) {
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
       "zero_area_triangles, t_junctions (vertices exactly on another triangle's edge with no triangle between, healed by splitting it), boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
-      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), pinch_free_angle (with pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, or none; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
+      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), pinch_free_angle (with pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, none, or unknown when --max-seconds ended the search; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

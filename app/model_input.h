@@ -209,9 +209,11 @@ inline constexpr std::array<double, 10> kPinchFreeAngles = {15, 30, 45, 60, 75, 
 /// that the angle cut out at one vertex (libcgal-demo's armadillo and femur at the default 60
 /// degrees) - goes at another angle; one in the geometry (a sheet touching itself) at none. One
 /// build_complex per angle tried (a few ms on a model of 10^4 triangles), only on the way to a
-/// refusal; `stop` (--max-seconds) is asked before each.
+/// refusal; `stop` (--max-seconds) is asked before each, and when it ends the search *stopped
+/// (if given) is set: nullopt then means "not found in time", not "none".
 inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, protect::ComplexOptions options,
-                                              const std::function<bool()>& stop = {}) {
+                                              const std::function<bool()>& stop = {}, bool* stopped = nullptr) {
+  if (stopped) *stopped = false;
   std::array<double, kPinchFreeAngles.size()> order = kPinchFreeAngles;
   const double given = options.feature_angle_degrees;
   std::sort(order.begin(), order.end(), [given](double a, double b) {
@@ -219,7 +221,10 @@ inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, prot
   });
   for (const double angle : order) {
     if (angle == given) continue;
-    if (stop && stop()) return std::nullopt;
+    if (stop && stop()) {
+      if (stopped) *stopped = true;
+      return std::nullopt;
+    }
     options.feature_angle_degrees = angle;
     try {
       if (protect::build_complex(soup, options).pinches.empty()) return angle;
@@ -230,10 +235,12 @@ inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, prot
   return std::nullopt;
 }
 
-/// What to do about pinched patches, given pinch_free_angle's answer.
-inline std::string pinch_advice(std::optional<double> free_angle) {
+/// What to do about pinched patches, given pinch_free_angle's answer and whether it stopped.
+inline std::string pinch_advice(std::optional<double> free_angle, bool stopped) {
   char advice[200];
-  if (free_angle)
+  if (stopped)
+    std::snprintf(advice, sizeof advice, "--max-seconds ended the search for a feature angle without them");
+  else if (free_angle)
     std::snprintf(advice, sizeof advice, "at --angle %g the feature curves divide the model without a pinch", *free_angle);
   else
     std::snprintf(advice, sizeof advice, "no --angle from %g to %g degrees removes them: separate the sheets or divide the patch there",
@@ -253,7 +260,10 @@ inline void reject_pinched_patches(const protect::Complex& complex, const io::Tr
   if (complex.pinches.empty()) return;
   const auto [v, patch] = complex.pinches.front();
   const Vec3 p = in_file_frame(complex.vertices[v]);
-  const std::string advice = pinch_advice(pinch_free_angle(soup, options, limit ? limit->poll() : std::function<bool()>{}));
+  bool stopped = false;
+  const std::optional<double> free_angle =
+      pinch_free_angle(soup, options, limit ? limit->poll() : std::function<bool()>{}, &stopped);
+  const std::string advice = pinch_advice(free_angle, stopped);
   char message[1000];
   std::snprintf(message, sizeof message,
                 "%s: patch %u touches itself only at the vertex (%.9g, %.9g, %.9g)%s: two fans of its triangles "

@@ -40,6 +40,14 @@ void BM_BuildComplexCube(benchmark::State& state) {
 }
 BENCHMARK(BM_BuildComplexCube)->Arg(290)->Unit(benchmark::kMillisecond);
 
+// An open sheet (a boundary of 4n edges): the cost of looking for T-junctions along it.
+void BM_BuildComplexSheet(benchmark::State& state) {
+  const auto soup = io::make_square_sheet(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(protect::build_complex(soup));
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+}
+BENCHMARK(BM_BuildComplexSheet)->Arg(700)->Unit(benchmark::kMillisecond);
+
 void BM_BuildAabbTree(benchmark::State& state) {
   const auto nu = static_cast<int>(state.range(0));
   const auto& soup = torus_soup(nu, nu / 2);

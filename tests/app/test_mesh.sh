@@ -267,6 +267,10 @@ expect 2 "at --angle 75 the feature curves divide the model without a pinch" -- 
 expect 0 "at --angle 75 the feature curves divide the model without a pinch" -- info "$TMP/tents.off"
 [[ "$(value pinched_vertices)" == "1" && "$(value pinch_free_angle)" == "75" ]] \
   || fail "tents: pinched_vertices=$(value pinched_vertices) pinch_free_angle=$(value pinch_free_angle)"
+# A limit already passed ends the search: "unknown", not "none" (and mesh does not claim none).
+expect 0 "--max-seconds ended the search" -- info "$TMP/tents.off" --max-seconds 1e-9
+[[ "$(value pinch_free_angle)" == "unknown" ]] || fail "tents, limit passed: pinch_free_angle=$(value pinch_free_angle)"
+expect 2 "--max-seconds ended the search for a feature angle" -- mesh "$TMP/tents.off" -o "$TMP/x.off" --max-seconds 1e-9
 expect 0 "" -- info "$TMP/tents.off" --angle 75
 [[ "$(value pinched_vertices)" == "0" && "$(value pinch_free_angle)" == "-" ]] \
   || fail "tents at 75: pinched_vertices=$(value pinched_vertices) pinch_free_angle=$(value pinch_free_angle)"
