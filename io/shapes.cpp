@@ -222,6 +222,33 @@ TriangleSoup make_square_sheet(int n) {
   return b.take();
 }
 
+TriangleSoup make_pinched_sheet(int n) {
+  require(n >= 2 && n % 2 == 0, "make_pinched_sheet: n must be even and >= 2");
+  TriangleSoup s = make_square_sheet(n);
+  const auto centre = static_cast<std::uint32_t>((n / 2) * (n + 1) + n / 2);
+  std::vector<std::size_t> around;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (const auto v : s.triangles[t])
+      if (v == centre) around.push_back(t);
+  const auto shares_edge = [&](std::size_t a, std::size_t b) {
+    int common = 0;
+    for (const auto u : s.triangles[a])
+      for (const auto w : s.triangles[b]) common += u == w ? 1 : 0;
+    return common == 2;
+  };
+  for (const std::size_t a : around)
+    for (const std::size_t b : around) {
+      if (a >= b || shares_edge(a, b)) continue;
+      bool common_neighbour = false;
+      for (const std::size_t c : around) common_neighbour |= c != a && c != b && shares_edge(a, c) && shares_edge(b, c);
+      if (common_neighbour) continue;
+      s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(b));
+      s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(a));
+      return s;
+    }
+  throw std::logic_error("make_pinched_sheet: no two triangles to drop at the centre");
+}
+
 TriangleSoup make_disc_sheet(int around, int rings) {
   require(around >= 8 && rings >= 1, "make_disc_sheet: need around >= 8 and rings >= 1");
   std::vector<Vec3> circle(around);

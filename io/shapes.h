@@ -53,6 +53,12 @@ TriangleSoup make_book(int sheets = 3, int n = 4);
 /// without (corner angle >= 180) 1 / 1 closed curve / 1.
 TriangleSoup make_square_sheet(int n = 4);
 
+/// make_square_sheet(n) (n even, >= 2) without two of the triangles at its centre that share no
+/// edge and have no neighbour in common there: one patch whose triangles form two fans at the
+/// centre, touching only there (a pinch, protect::Complex::pinches), its two holes' sides leaving
+/// the centre, a corner, as four curves.
+TriangleSoup make_pinched_sheet(int n = 4);
+
 /// The unit disc in the plane z = 0 as an open sheet: around >= 8 boundary segments, rings >= 1.
 /// 1 corner (placed on the loop) / 1 closed curve / 1 patch.
 TriangleSoup make_disc_sheet(int around = 24, int rings = 4);

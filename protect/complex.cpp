@@ -35,6 +35,7 @@ Complex build_complex(const io::TriangleSoup& soup, const ComplexOptions& option
   const detail::VertexFans fans = detail::find_patches(complex);
   detail::find_corners_and_curves(complex, fans);
   detail::link_incidences(complex, fans);
+  detail::describe_pinch_fans(complex);
   return complex;
 }
 

@@ -1,7 +1,7 @@
 // The piecewise smooth complex (PSC) approximated by a polygon mesh: corners (0-faces), curves
 // (1-faces) and surface patches (2-faces), as in Dey & Levine, DelPSC, §1.1.
 //
-// build_complex turns a TriangleSoup into a Complex in five steps, each in its own file:
+// build_complex turns a TriangleSoup into a Complex in seven steps, each in its own file:
 //  1. triangle_cleanup.cpp: exactly coincident vertices are welded; zero-area triangles (repeated
 //     vertex, or three exactly collinear vertices - the exact kernel predicate decides) are
 //     reported and kept out. A collinear "cap" (c strictly between a and b) is not just dropped,
@@ -22,7 +22,7 @@
 //  4. patches.cpp: patches are the connected components of triangles across non-feature edges;
 //     the cut surface of each (the patch cut open along its features) gives its Euler
 //     characteristic and boundary loop count; a vertex around which one patch's triangles form
-//     two fans sharing no edge is a pinch (Complex::pinches), which the mesher cannot handle.
+//     two fans sharing no edge is a pinch (Complex::pinches).
 //  5. curves.cpp: corners and curves. A feature vertex is a corner when its feature degree is
 //     not 2, when its curve turns by more than the corner angle, when the patches along its two
 //     feature edges differ (the interior of a curve must see the same patches everywhere, or the
@@ -31,6 +31,9 @@
 //     feature edge, its triangles' angles there summing below kApexAngleDegrees). Curves are
 //     the maximal feature polylines between corners; a loop of features with no corner gets one
 //     at its smallest vertex index and becomes a closed curve (start corner == end corner).
+//  6. patches.cpp (link_incidences): the incidence lists and each patch's topology.
+//  7. pinch_fans.cpp: each pinch's fans, the curves bounding each (Complex::pinch_fans), which the
+//     mesher's disk condition asks for one disk each; the pinches it cannot follow that way.
 //
 // Conventions: curves are oriented from start_corner to end_corner, parametrised by arc length
 // s in [0, length]. On a closed curve parameters are taken modulo the length (any real s is
@@ -94,6 +97,14 @@ enum CornerFlag : std::uint8_t {
 /// is 360 sin(half-angle)), where the surface is no smooth patch - a 0-face of the complex (§1.1).
 /// Refined as a smooth point, the tip looks the same at every scale and refinement never ended.
 inline constexpr double kApexAngleDegrees = 180;
+
+/// A fan at a pinch whose two curves leave the vertex at a smaller angle than this many degrees
+/// makes the pinch unsupported (Complex::unsupported_pinches): libcgal-demo's
+/// cylinder_locally_refined.off has a fan of one needle triangle there (1.3 degrees, folded at
+/// 0.5 degrees against its neighbour along a crack 1e-5 of the diagonal wide), at which
+/// refinement ran past two million vertices; the other pinches of the libcgal-demo models have
+/// fans of 39 degrees or more.
+inline constexpr double kNarrowestPinchWedgeDegrees = 10;
 
 struct Curve {
   std::uint32_t first = 0;  ///< offset of its polyline in curve_vertices and curve_arclength
@@ -183,8 +194,18 @@ class Complex {
   /// each vertex around which the patch's triangles form more than one fan through shared
   /// edges (both sides of a slit share the slit's edges: one fan). The patch is then no
   /// 2-manifold with boundary there, which DelPSC assumes (§1.1): its umbrella at that vertex
-  /// can never be one disk (D1), so the mesher refuses such a complex.
+  /// can never be one disk (D1). The mesher follows a pinch at a corner fan by fan (pinch_fans);
+  /// it refuses the others (unsupported_pinches).
   kernel::LargeVector<std::array<std::uint32_t, 2>> pinches;
+  /// For each pinch, in the same order, its patch's fans at its vertex (CSR by pinch): each the
+  /// two curves whose edges at the vertex bound the fan (an open fan, a wedge; the same curve
+  /// twice for a loop), or kNoIndex twice (a closed fan: the patch all round the vertex).
+  kernel::LargeVector<std::uint32_t> pinch_fan_offsets;
+  kernel::LargeVector<std::array<std::uint32_t, 2>> pinch_fans;
+  /// The pinches whose fans have no such description - the vertex is no corner, or a fan is
+  /// bounded by one or more than two curve edges there -, or with a fan narrower than
+  /// kNarrowestPinchWedgeDegrees, which the mesher refuses. Increasing.
+  kernel::LargeVector<std::array<std::uint32_t, 2>> unsupported_pinches;
 
   CleanupReport cleanup;
   ComplexOptions options;  ///< as used (feature_polylines in soup indices)
@@ -198,6 +219,9 @@ class Complex {
 
   std::span<const std::uint32_t> edge_triangle_ids(std::uint32_t e) const { return csr(edge_triangle_offsets, edge_triangles, e); }
   std::span<const std::uint32_t> corner_curve_ids(std::uint32_t k) const { return csr(corner_curve_offsets, corner_curves, k); }
+  /// The fans of `patch` at corner k where the patch is pinched (pinch_fans); empty where it has
+  /// one fan there, or the pinch is unsupported. O(log P) for P pinches.
+  std::span<const std::array<std::uint32_t, 2>> corner_pinch_fans(std::uint32_t k, std::uint32_t patch) const;
   std::span<const std::uint32_t> corner_patch_ids(std::uint32_t k) const { return csr(corner_patch_offsets, corner_patches, k); }
   std::span<const std::uint32_t> curve_patch_ids(std::uint32_t c) const { return csr(curve_patch_offsets, curve_patches, c); }
   std::span<const std::uint32_t> patch_triangle_ids(std::uint32_t p) const { return csr(patch_triangle_offsets, patch_triangles, p); }

@@ -57,6 +57,11 @@ void find_corners_and_curves(Complex& complex, const VertexFans& fans);
 /// boundary loop count. (patches.cpp)
 void link_incidences(Complex& complex, const VertexFans& fans);
 
+/// Reads triangles, triangle_patch, the edge table, edge_curve, vertex_corner and pinches;
+/// writes pinch_fan_offsets, pinch_fans and unsupported_pinches. O(T) when there are pinches,
+/// nothing otherwise. (pinch_fans.cpp)
+void describe_pinch_fans(Complex& complex);
+
 /// Tiny union-find with path halving, for the grouping steps.
 class UnionFind {
  public:

@@ -289,37 +289,32 @@ TEST_CASE("inconsistently oriented triangles make no false features") {
 }
 
 TEST_CASE("a patch touching itself only at a vertex is a pinch") {
-  // Around the sheet's centre vertex 12, drop two triangles that share no edge and leave a
-  // triangle between them on either side: its triangles form two fans, still one patch.
-  io::TriangleSoup s = io::make_square_sheet(4);
-  CHECK(build_complex(s).pinches.empty());
-  std::vector<std::size_t> around;
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-    if (std::count(s.triangles[t].begin(), s.triangles[t].end(), 12u)) around.push_back(t);
-  REQUIRE(around.size() == 6);
-  const auto shares_edge = [&](std::size_t a, std::size_t b) {
-    int common = 0;
-    for (const auto u : s.triangles[a]) common += static_cast<int>(std::count(s.triangles[b].begin(), s.triangles[b].end(), u));
-    return common == 2;
-  };
-  // Opposite triangles around the vertex: neither shares an edge with the other nor with a
-  // common neighbour.
-  std::optional<std::pair<std::size_t, std::size_t>> drop;
-  for (const std::size_t a : around)
-    for (const std::size_t b : around) {
-      if (a >= b || shares_edge(a, b) || drop) continue;
-      const bool common_neighbour = std::any_of(around.begin(), around.end(), [&](std::size_t c) {
-        return c != a && c != b && shares_edge(a, c) && shares_edge(b, c);
-      });
-      if (!common_neighbour) drop = std::pair{a, b};
-    }
-  REQUIRE(drop);
-  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(drop->second));
-  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(drop->first));
+  // Around the sheet's centre vertex 12, two triangles that share no edge are dropped, with a
+  // triangle left between them on either side: its triangles form two fans, still one patch.
+  CHECK(build_complex(io::make_square_sheet(4)).pinches.empty());
+  const io::TriangleSoup s = io::make_pinched_sheet(4);
+  REQUIRE(s.triangles.size() == 30);
   const Complex pinched = build_complex(s);
   CHECK(pinched.patch_count() == 1);
   REQUIRE(pinched.pinches.size() == 1);
   CHECK(pinched.pinches[0] == std::array<std::uint32_t, 2>{12, 0});
+  // Four hole sides leave the corner at 12; each fan is a wedge between two of them, which the
+  // mesher follows fan by fan (none unsupported).
+  CHECK(pinched.unsupported_pinches.empty());
+  const std::uint32_t corner = pinched.vertex_corner[12];
+  REQUIRE(corner != protect::kNoIndex);
+  const auto fans = pinched.corner_pinch_fans(corner, 0);
+  REQUIRE(fans.size() == 2);
+  for (const auto& fan : fans) {
+    CHECK(fan[0] != protect::kNoIndex);
+    CHECK(fan[1] != protect::kNoIndex);
+    CHECK(fan[0] != fan[1]);
+    for (const std::uint32_t c : fan)  // curves of the holes' sides, leaving the pinch
+      CHECK((pinched.curves[c].start_corner == corner || pinched.curves[c].end_corner == corner));
+  }
+  CHECK(pinched.corner_pinch_fans(corner, 1).empty());  // no such patch
+  for (std::uint32_t k = 0; k < pinched.corner_count(); ++k)
+    if (k != corner) CHECK(pinched.corner_pinch_fans(k, 0).empty());
 }
 
 TEST_CASE("user polylines split patches or cut slits") {
