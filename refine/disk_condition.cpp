@@ -73,6 +73,21 @@ bool DiskCondition::on_patch(PointId q, std::uint32_t patch) const {
   return std::find(patches.begin(), patches.end(), patch) != patches.end();
 }
 
+DiskFailure DiskCondition::check_pinched_link(std::span<const std::array<PointId, 2>> link,
+                                              std::span<const std::array<std::uint32_t, 2>> fans) const {
+  thread_local std::vector<LinkPiece> pieces;
+  if (!link_pieces(link, pieces) || pieces.size() != fans.size()) return DiskFailure::d1;
+  // A path's end lies on a curve when it is a ball of that curve or at a corner it ends at.
+  const auto on_curve = [this](PointId q, std::uint32_t curve) {
+    if (q >= places_->size() || (*places_)[q].kind != VertexPlace::Kind::ball) return false;
+    const VertexPlace& v = (*places_)[q];
+    if (v.corner == kNoElement) return v.curve == curve;
+    const auto curves = domain_->corner_curves(v.corner);
+    return std::find(curves.begin(), curves.end(), curve) != curves.end();
+  };
+  return pieces_match_fans(pieces, fans, on_curve) ? DiskFailure::none : DiskFailure::d2;
+}
+
 DiskVerdict DiskCondition::check(PointId p, std::span<const Incidence> incident) const {
   thread_local std::vector<std::pair<std::uint32_t, bool>> patches;
   patches_of(p, patches);
@@ -91,11 +106,20 @@ DiskVerdict DiskCondition::check(PointId p, std::span<const Incidence> incident)
       link_facet.push_back(x.slot);
     }
     if (link.empty()) return {DiskFailure::d1, sigma, kNoFacet};
-    const LinkShape shape = link_shape(link);
-    if (!shape.simple) return {DiskFailure::d1, sigma, kNoFacet};
-    // Connected with degrees <= 2: a cycle when E == V, a path when E == V - 1.
-    const bool cycle = link.size() == shape.vertices;
-    if (cycle != interior) return {DiskFailure::d2, sigma, kNoFacet};
+    const auto fans = p_is_ball && (*places_)[p].corner != kNoElement
+                          ? domain_->corner_pinch_fans((*places_)[p].corner, sigma)
+                          : std::span<const std::array<std::uint32_t, 2>>{};
+    if (!fans.empty()) {
+      // σ pinched at this corner: one disk per fan of the input (link_shape.h), D1 for the
+      // count of disks, D2 for their kinds and the curves each open one runs between.
+      if (const DiskFailure f = check_pinched_link(link, fans); f != DiskFailure::none) return {f, sigma, kNoFacet};
+    } else {
+      const LinkShape shape = link_shape(link);
+      if (!shape.simple) return {DiskFailure::d1, sigma, kNoFacet};
+      // Connected with degrees <= 2: a cycle when E == V, a path when E == V - 1.
+      const bool cycle = link.size() == shape.vertices;
+      if (cycle != interior) return {DiskFailure::d2, sigma, kNoFacet};
+    }
     if (late.failure != DiskFailure::none) continue;
     for (std::size_t i = 0; i < link.size() && late.failure == DiskFailure::none; ++i) {
       for (const PointId q : link[i]) {

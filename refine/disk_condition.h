@@ -1,9 +1,11 @@
 // Disk_Condition(p) of DelPSC (Dey & Levine 2009, §3), checked on the umbrellas
 // Umb_σ(p) = the restricted triangles of Skl²|σ incident to p, for every patch σ containing p:
 //  (D1) the underlying space of Umb_σ(p) is a 2-disk (here: non-empty, and the link of p - the
-//       edges opposite p - is one simple path or one simple cycle);
+//       edges opposite p - is one simple path or one simple cycle; at a corner where σ touches
+//       itself, a pinch, one disk per fan of σ there: link_shape.h's link_pieces);
 //  (D2) p is inside that disk (cycle) iff p ∈ int σ (an unweighted point, or a ball on a curve
-//       with σ on both of its sides, like a slit), on its boundary (path) otherwise;
+//       with σ on both of its sides, like a slit), on its boundary (path) otherwise; at a pinch,
+//       a cycle per closed fan and a path per open one, between the fan's two curves;
 //  (D3) a vertex p on a curve or corner is joined in Umb_σ(p) to no ball that is not adjacent to it;
 //  (D4) every vertex of Umb_σ(p) lies in σ; here also: no restricted triangle incident to p is
 //       restricted to a patch that does not contain p (otherwise a triangle of σ with no vertex
@@ -13,6 +15,7 @@
 // edges).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -63,6 +66,10 @@ class DiskCondition {
   DiskVerdict check(PointId p, const RestrictedFacets& facets) const { return check(p, facets.incident(p)); }
 
  private:
+  /// D1/D2 at a corner where σ is pinched, for Umb_σ(p)'s link: one piece per fan of the input.
+  DiskFailure check_pinched_link(std::span<const std::array<PointId, 2>> link,
+                                 std::span<const std::array<std::uint32_t, 2>> fans) const;
+
   const Domain* domain_;
   const BallSource* balls_;
   const kernel::LargeVector<VertexPlace>* places_;

@@ -77,6 +77,13 @@ class Domain {
   virtual std::span<const std::uint32_t> corner_curves(std::uint32_t corner) const = 0;
   /// Patches containing the corner, distinct, increasing.
   virtual std::span<const std::uint32_t> corner_patches(std::uint32_t corner) const = 0;
+  /// Where `patch` touches itself at the corner (a pinch: its triangles there form several
+  /// fans sharing no edge), the fans: each the two curves bounding it at the corner (an open
+  /// fan, a wedge), or kNoElement twice (a closed fan, the patch all round the corner). Empty
+  /// where the patch has one fan there - the common case, and the default.
+  virtual std::span<const std::array<std::uint32_t, 2>> corner_pinch_fans(std::uint32_t /*corner*/, std::uint32_t /*patch*/) const {
+    return {};
+  }
 
   // ---- curves (1-faces) -----------------------------------------------------------------------
   virtual std::uint32_t curve_count() const = 0;

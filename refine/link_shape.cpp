@@ -96,4 +96,68 @@ LinkShape link_shape(std::span<const std::array<PointId, 2>> link) {
   return link.size() <= kSmallLink ? link_shape_small(link) : link_shape_large(link);
 }
 
+bool link_pieces(std::span<const std::array<PointId, 2>> link, std::vector<LinkPiece>& pieces) {
+  pieces.clear();
+  std::vector<PointId> verts;
+  for (const auto& e : link) verts.insert(verts.end(), e.begin(), e.end());
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  const auto index = [&](PointId v) {
+    return static_cast<std::uint32_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
+  };
+  std::vector<std::uint32_t> degree(verts.size(), 0), parent(verts.size());
+  for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  const auto root = [&](std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& e : link) {
+    const std::uint32_t a = index(e[0]), b = index(e[1]);
+    if (++degree[a] > 2 || ++degree[b] > 2) return false;
+    parent[root(a)] = root(b);
+  }
+  // Per component: its vertices, its edges, and its degree-1 vertices (a path's ends).
+  std::vector<std::uint32_t> piece_of(verts.size(), 0xffffffffu), vertex_count, edge_count, ends_seen;
+  for (std::uint32_t i = 0; i < verts.size(); ++i) {
+    const std::uint32_t r = root(i);
+    if (piece_of[r] == 0xffffffffu) {
+      piece_of[r] = static_cast<std::uint32_t>(pieces.size());
+      pieces.emplace_back();
+      vertex_count.push_back(0);
+      edge_count.push_back(0);
+      ends_seen.push_back(0);
+    }
+    const std::uint32_t k = piece_of[r];
+    // Degrees <= 2 and connected: a path has exactly two ends, a cycle none.
+    if (degree[i] == 1) pieces[k].ends[ends_seen[k]++] = verts[i];
+    ++vertex_count[k];
+  }
+  for (const auto& e : link) ++edge_count[piece_of[root(index(e[0]))]];
+  for (std::size_t k = 0; k < pieces.size(); ++k) pieces[k].cycle = edge_count[k] == vertex_count[k];
+  return true;
+}
+
+bool pieces_match_fans(std::span<const LinkPiece> pieces, std::span<const std::array<std::uint32_t, 2>> fans,
+                       const std::function<bool(PointId, std::uint32_t)>& on_curve) {
+  if (pieces.size() != fans.size()) return false;
+  constexpr std::uint32_t kClosed = 0xffffffffu;
+  std::vector<std::uint8_t> used(fans.size(), 0);
+  const auto fits = [&](const LinkPiece& p, const std::array<std::uint32_t, 2>& f) {
+    if (p.cycle || f[0] == kClosed) return p.cycle && f[0] == kClosed;
+    return (on_curve(p.ends[0], f[0]) && on_curve(p.ends[1], f[1])) || (on_curve(p.ends[0], f[1]) && on_curve(p.ends[1], f[0]));
+  };
+  // Piece i onwards to the unused fans; depth-first (fans are a handful).
+  const std::function<bool(std::size_t)> assign = [&](std::size_t i) {
+    if (i == pieces.size()) return true;
+    for (std::size_t f = 0; f < fans.size(); ++f) {
+      if (used[f] || !fits(pieces[i], fans[f])) continue;
+      used[f] = 1;
+      if (assign(i + 1)) return true;
+      used[f] = 0;
+    }
+    return false;
+  };
+  return assign(0);
+}
+
 }  // namespace delpsc::refine

@@ -6,7 +6,10 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <span>
+#include <vector>
 
 #include <delpsc/delaunay/regular_triangulation.h>
 
@@ -28,5 +31,27 @@ LinkShape link_shape_small(std::span<const std::array<delaunay::PointId, 2>> lin
 /// memory kept between calls (per thread). `vertices` counts the endpoints seen before a
 /// third edge at one vertex ended the test, when it did.
 LinkShape link_shape_large(std::span<const std::array<delaunay::PointId, 2>> link);
+
+// ---- links at a pinch ------------------------------------------------------------------------
+// Where a patch touches itself at a corner (Domain::corner_pinch_fans) its umbrella there is
+// not one disk but one per fan of the input: the link must be as many simple pieces, a cycle for
+// each closed fan and a path for each open one, each path running between the two curves that
+// bound its fan.
+
+/// One connected piece of a link: a simple path between `ends`, or a simple cycle.
+struct LinkPiece {
+  bool cycle = false;
+  std::array<delaunay::PointId, 2> ends{};  ///< a path's two ends (unset for a cycle)
+};
+
+/// The pieces of the link, when no vertex has degree above 2 (false otherwise, `pieces` then
+/// unspecified). O(k log k) for k edges: for the few umbrellas at pinches.
+bool link_pieces(std::span<const std::array<delaunay::PointId, 2>> link, std::vector<LinkPiece>& pieces);
+
+/// Whether the pieces are the fans one to one: as many, cycles for the closed fans (both curves
+/// 0xffffffff), and paths for the open ones whose two ends lie on the fan's two curves
+/// (`on_curve(end, curve)`), in either order. Exhaustive over the assignments (a handful of fans).
+bool pieces_match_fans(std::span<const LinkPiece> pieces, std::span<const std::array<std::uint32_t, 2>> fans,
+                       const std::function<bool(delaunay::PointId, std::uint32_t)>& on_curve);
 
 }  // namespace delpsc::refine

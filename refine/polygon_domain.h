@@ -61,6 +61,9 @@ class PolygonDomain final : public Domain {
   Vec3 corner_point(std::uint32_t k) const override { return complex_.vertices[complex_.corner_vertex[k]]; }
   std::span<const std::uint32_t> corner_curves(std::uint32_t k) const override { return complex_.corner_curve_ids(k); }
   std::span<const std::uint32_t> corner_patches(std::uint32_t k) const override { return complex_.corner_patch_ids(k); }
+  std::span<const std::array<std::uint32_t, 2>> corner_pinch_fans(std::uint32_t k, std::uint32_t patch) const override {
+    return complex_.corner_pinch_fans(k, patch);
+  }
 
   std::uint32_t curve_count() const override { return static_cast<std::uint32_t>(complex_.curve_count()); }
   double curve_length(std::uint32_t c) const override { return complex_.curves[c].length; }

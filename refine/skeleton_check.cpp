@@ -229,6 +229,27 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     by_patch[static_cast<std::size_t>(mesh.triangle_patch[t])].push_back(t);  // in range, checked above
   }
+  // Where σ touches itself at a corner (Domain::corner_pinch_fans) the triangles around the
+  // corner vertex are one disk per fan of the input, each open one between the feature edges of
+  // its two curves; elsewhere one disk.
+  const auto pinch_fans_at = [&](std::uint32_t v, std::uint32_t sigma) {
+    const auto k = std::lower_bound(at_corner.begin(), at_corner.end(), std::pair{v, std::uint32_t{0}});
+    return k != at_corner.end() && k->first == v ? domain.corner_pinch_fans(k->second, sigma)
+                                                 : std::span<const std::array<std::uint32_t, 2>>{};
+  };
+  std::vector<std::pair<Edge, std::uint32_t>> edge_curves;  // feature edges with their curves, sorted
+  for (std::size_t i = 0; i < mesh.edges.size(); ++i)
+    edge_curves.emplace_back(edge(mesh.edges[i][0], mesh.edges[i][1]), static_cast<std::uint32_t>(mesh.edge_curve[i]));
+  std::sort(edge_curves.begin(), edge_curves.end());
+  std::vector<LinkPiece> pieces;
+  const auto fan_is_disks = [&](std::uint32_t v, std::uint32_t sigma, const auto& link) {
+    const auto fans = pinch_fans_at(v, sigma);
+    if (fans.empty()) return link_shape(link).simple;
+    const auto on_its_curve = [&](std::uint32_t end, std::uint32_t curve) {
+      return std::binary_search(edge_curves.begin(), edge_curves.end(), std::pair{edge(v, end), curve});
+    };
+    return link_pieces(link, pieces) && pieces_match_fans(pieces, fans, on_its_curve);
+  };
   Array<Edge> boundary, expected, slit;
   Array<std::array<std::uint32_t, 2>> fan;  // a vertex's link, as link_shape.h takes it
   SortedSides sorted;
@@ -276,8 +297,10 @@ SkeletonReport check_skeleton(const io::SurfaceMesh& mesh, const Domain& domain,
         fan.push_back({opposite.first, opposite.second});
       }
       ++ps.vertices;
-      if (!link_shape(fan).simple)
-        problem(sigma, "the triangles around vertex " + std::to_string(v) + " are not one disk"), ps.manifold = false;
+      if (!fan_is_disks(v, sigma, fan))
+        problem(sigma, "the triangles around vertex " + std::to_string(v) + " are not one disk" +
+                           (pinch_fans_at(v, sigma).empty() ? "" : " per fan of the pinched patch there")),
+            ps.manifold = false;
       // Bounded by four times the tolerance squared: the search then only opens the tree's nodes
       // near v (a third of this check's time went to closest points), and whenever v is within
       // the tolerance the answer is the unbounded one.

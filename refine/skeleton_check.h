@@ -1,6 +1,8 @@
 // Guarantee G1 of DelPSC (Dey & Levine 2009, §3-4) checked on an output mesh: for each patch σ,
 // Skl²|σ (the triangles labelled σ) is a 2-manifold - every edge in one or two of its triangles,
-// the triangles around each vertex one disk (a fan whose link is a path or a cycle) - whose
+// the triangles around each vertex one disk (a fan whose link is a path or a cycle; at a corner
+// where σ touches itself, Domain::corner_pinch_fans, one disk per fan of the input, each open one
+// between the feature edges of its two curves) - whose
 // boundary is exactly the chain of ball centres along σ's boundary curves (the mesh's feature
 // edges of the curves bounding σ once; a curve with σ on both sides, a slit, must be interior),
 // with every vertex on the domain near σ. Also per patch the Euler characteristic and the number

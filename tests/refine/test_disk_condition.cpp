@@ -196,3 +196,36 @@ TEST_CASE("disk condition at a slit: a ball on the fin's curve is interior to th
     CHECK(disk.check(0, joined(fan(bottom, {1, 2, 6, 3, 4}, true), fin_path)).failure == DiskFailure::d4);
   }
 }
+
+TEST_CASE("disk condition at a pinch: one disk per fan, each between its own two curves") {
+  const refine::PolygonDomain domain(io::make_pinched_sheet(4));
+  REQUIRE(domain.complex().pinches.size() == 1);
+  const std::uint32_t corner = domain.complex().vertex_corner[domain.complex().pinches[0][0]];
+  const auto fans = domain.corner_pinch_fans(corner, 0);
+  REQUIRE(fans.size() == 2);
+  // Four curves leave the pinch, two per fan.
+  std::vector<std::uint32_t> curves{fans[0][0], fans[0][1], fans[1][0], fans[1][1]};
+  std::sort(curves.begin(), curves.end());
+  REQUIRE(std::unique(curves.begin(), curves.end()) == curves.end());
+  // Vertex 0: the corner's ball; 1, 2 balls on fan 0's curves, 3, 4 on fan 1's; 5-8 surface.
+  kernel::LargeVector<VertexPlace> places(9);
+  places[0] = at_corner(0, corner);
+  places[1] = on_curve(1, fans[0][0]);
+  places[2] = on_curve(2, fans[0][1]);
+  places[3] = on_curve(3, fans[1][0]);
+  places[4] = on_curve(4, fans[1][1]);
+  for (int i = 5; i <= 8; ++i) places[i] = surface(0);
+  const ListedBalls balls({{0, 1}, {0, 2}, {0, 3}, {0, 4}});
+  const refine::DiskCondition disk(domain, balls, places);
+  const auto fan_a = fan(0, {1, 5, 2}, false), fan_b = fan(0, {4, 6, 7, 3}, false);
+  CHECK(disk.check(0, joined(fan_a, fan_b)).failure == DiskFailure::none);
+  // One disk where the input has two (the paper's D1 as written fails at every pinch).
+  CHECK(disk.check(0, fan(0, {1, 5, 2, 6, 3}, false)).failure == DiskFailure::d1);
+  CHECK(disk.check(0, fan_a).failure == DiskFailure::d1);
+  // Two paths, but each joining curves of different fans; a path ending off the curves.
+  CHECK(disk.check(0, joined(fan(0, {1, 5, 3}, false), fan(0, {2, 6, 4}, false))).failure == DiskFailure::d2);
+  CHECK(disk.check(0, joined(fan(0, {1, 5, 8}, false), fan_b)).failure == DiskFailure::d2);
+  // A cycle for an open fan; a link vertex of degree three.
+  CHECK(disk.check(0, joined(fan(0, {1, 5, 2}, true), fan_b)).failure == DiskFailure::d2);
+  CHECK(disk.check(0, joined(joined(fan_a, fan_b), fan(0, {5, 8}, false))).failure == DiskFailure::d1);
+}

@@ -134,3 +134,56 @@ TEST_CASE("small and large classifiers agree with the oracle on random graphs") 
   CHECK(simple > total / 5);  // the generator does produce both answers
   CHECK(simple < total);
 }
+
+// ---- links at a pinch (link_pieces, pieces_match_fans) --------------------------------------
+
+TEST_CASE("link pieces: paths with their ends, cycles, and a vertex of degree 3") {
+  std::vector<refine::LinkPiece> pieces;
+  // Two paths (a pinch of two open fans): 1-2-3 and 7-8.
+  std::vector<Edge> two_paths = {{2, 3}, {7, 8}, {1, 2}};
+  REQUIRE(refine::link_pieces(two_paths, pieces));
+  REQUIRE(pieces.size() == 2);
+  std::vector<std::array<delaunay::PointId, 2>> ends;
+  for (const auto& p : pieces) {
+    CHECK_FALSE(p.cycle);
+    ends.push_back({std::min(p.ends[0], p.ends[1]), std::max(p.ends[0], p.ends[1])});
+  }
+  std::sort(ends.begin(), ends.end());
+  CHECK(ends == std::vector<std::array<delaunay::PointId, 2>>{{1, 3}, {7, 8}});
+  // A cycle and a path.
+  std::vector<Edge> mixed = cycle(10, 4);
+  mixed.push_back({30, 31});
+  REQUIRE(refine::link_pieces(mixed, pieces));
+  REQUIRE(pieces.size() == 2);
+  CHECK(std::count_if(pieces.begin(), pieces.end(), [](const auto& p) { return p.cycle; }) == 1);
+  // One simple path is one piece, as link_shape says.
+  REQUIRE(refine::link_pieces(std::vector<Edge>{{4, 5}, {5, 6}}, pieces));
+  CHECK(pieces.size() == 1);
+  // Degree 3: no pieces.
+  CHECK_FALSE(refine::link_pieces(std::vector<Edge>{{0, 1}, {0, 2}, {0, 3}}, pieces));
+}
+
+TEST_CASE("link pieces match a pinch's fans one to one, by kind and by curves") {
+  // Vertices 1..4 lie on curves 11..14 (vertex v on curve 10 + v); 5 on none.
+  const auto on_curve = [](delaunay::PointId v, std::uint32_t c) { return v >= 1 && v <= 4 && c == 10 + v; };
+  constexpr std::uint32_t kClosed = 0xffffffffu;
+  const std::vector<std::array<std::uint32_t, 2>> wedges = {{11, 12}, {13, 14}};
+  std::vector<refine::LinkPiece> pieces;
+  const auto match = [&](const std::vector<Edge>& link, const std::vector<std::array<std::uint32_t, 2>>& fans) {
+    return refine::link_pieces(link, pieces) && refine::pieces_match_fans(pieces, fans, on_curve);
+  };
+  CHECK(match({{1, 6}, {6, 2}, {3, 7}, {7, 4}}, wedges));   // each path between its fan's curves
+  CHECK(match({{4, 7}, {7, 3}, {2, 6}, {6, 1}}, wedges));   // in any order and direction
+  CHECK_FALSE(match({{1, 6}, {6, 3}, {2, 7}, {7, 4}}, wedges));  // paths joining the wrong curves
+  CHECK_FALSE(match({{1, 6}, {6, 2}, {2, 7}, {7, 1}}, wedges));  // one piece for two fans (a cycle)
+  CHECK_FALSE(match({{1, 6}, {6, 2}}, wedges));                  // a fan missing
+  CHECK_FALSE(match({{1, 6}, {6, 5}, {3, 7}, {7, 4}}, wedges));  // an end on no curve
+  // A closed fan and an open one: a cycle and a path.
+  const std::vector<std::array<std::uint32_t, 2>> closed_and_open = {{kClosed, kClosed}, {11, 12}};
+  std::vector<Edge> ring = cycle(20, 5);
+  std::vector<Edge> with_path = ring;
+  with_path.push_back({1, 2});
+  CHECK(match(with_path, closed_and_open));
+  std::vector<Edge> two_paths = {{1, 2}, {3, 4}};
+  CHECK_FALSE(match(two_paths, closed_and_open));
+}

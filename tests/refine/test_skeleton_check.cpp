@@ -291,3 +291,31 @@ TEST_CASE("skeleton check: labels out of range, and curve or corner vertices off
     CHECK(problems_of(mesh).find("at no corner") != std::string::npos);
   }
 }
+
+TEST_CASE("skeleton check: a pinched patch is one disk per fan at its corner") {
+  const io::TriangleSoup soup = io::make_pinched_sheet(4);
+  const refine::PolygonDomain domain(soup);
+  REQUIRE(domain.complex().pinches.size() == 1);
+  const io::SurfaceMesh input = protect::to_surface_mesh(domain.complex());
+  const refine::SkeletonReport report = refine::check_skeleton(input, domain, tolerance(domain));
+  CHECK(report.ok());
+  REQUIRE(report.patches.size() == 1);
+  CHECK(report.patches[0].manifold);
+  CHECK(report.patches[0].cut_euler == domain.complex().patches[0].euler_characteristic);
+  CHECK(report.patches[0].cut_boundary_loops == domain.complex().patches[0].boundary_loops);
+  // One hole filled again: the triangles around the pinch are one disk, not the two fans the
+  // domain has there.
+  const io::TriangleSoup whole = io::make_square_sheet(4);
+  io::SurfaceMesh filled = input;
+  for (const auto& t : whole.triangles)
+    if (std::find(soup.triangles.begin(), soup.triangles.end(), t) == soup.triangles.end()) {
+      filled.triangles.push_back(t);
+      filled.triangle_patch.push_back(0);
+      break;
+    }
+  REQUIRE(filled.triangles.size() == input.triangles.size() + 1);
+  const std::uint32_t pinch = domain.complex().pinches[0][0];
+  const auto broken = refine::check_skeleton(filled, domain, tolerance(domain));
+  CHECK(mentions(broken, "the triangles around vertex " + std::to_string(pinch) + " are not one disk per fan"));
+  CHECK_FALSE(broken.patches[0].manifold);
+}
