@@ -60,12 +60,14 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("corners", complex.corner_count());
   report("curves", complex.curve_count());
   report("patches", complex.patch_count());
-  report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: mesh refuses
-  // With pinches: the feature angle nearest --angle without one (mesh's refusal names it), or none.
-  // --max-seconds may end that search: "unknown" then, not "none".
+  report("pinched_vertices", complex.pinches.size());  // a patch touching itself there: meshed fan by fan
+  const auto& unsupported = complex.unsupported_pinches;
+  report("unsupported_pinches", unsupported.size());  // those mesh refuses (no corner, or odd fans)
+  // With unsupported pinches: the feature angle nearest --angle without one (mesh's refusal names
+  // it), or none. --max-seconds may end that search: "unknown" then, not "none".
   bool pinch_search_stopped = false;
   const std::optional<double> free_angle =
-      complex.pinches.empty()
+      unsupported.empty()
           ? std::nullopt
           : pinch_free_angle(model.soup, complex_options(o.angle, protect::ComplexOptions{}.corner_angle_degrees),
                              time_limit.poll(), &pinch_search_stopped);
@@ -75,7 +77,7 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
     std::snprintf(angle, sizeof angle, "%g", *free_angle);
   else if (pinch_search_stopped)
     std::snprintf(angle, sizeof angle, "unknown");
-  else if (!complex.pinches.empty())
+  else if (!unsupported.empty())
     std::snprintf(angle, sizeof angle, "none");
   report("pinch_free_angle", std::string(angle));
   report("duplicate_triangles", complex.cleanup.duplicate_triangles);  // repeats: mesh refuses
@@ -99,18 +101,20 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   const std::string unmarked = unmarked_sharp_edge_warning(complex, o.angle, o.input);
   report("warnings", model.report.warnings.size() + (model.report.unused_vertices > 0) +
                          !model.report.degenerate_triangles.empty() + !complex.cleanup.flat_caps.empty() + (complex.cleanup.t_junctions > 0) +
-                         !fold.empty() + !unmarked.empty() + (crossing > 0) + !complex.pinches.empty());
+                         !fold.empty() + !unmarked.empty() + (crossing > 0) + !unsupported.empty());
   if (!fold.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", fold.c_str());
   if (!unmarked.empty() && !g.quiet) std::fprintf(stderr, "delpsc: warning: %s\n", unmarked.c_str());
   if (crossing > 0 && !g.quiet)
     std::fprintf(stderr,
                  "delpsc: warning: %s: %s%zu pair(s) of triangles cross or overlap; `delpsc mesh` refuses such a model\n",
                  o.input.c_str(), crossing == kSelfIntersectionsCounted ? "at least " : "", crossing);
-  if (!complex.pinches.empty() && !g.quiet)
+  if (!unsupported.empty() && !g.quiet)
     std::fprintf(stderr,
-                 "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex (at --angle %g); "
-                 "`delpsc mesh` refuses such a model; %s\n",
-                 o.input.c_str(), complex.pinches.size(), o.angle, pinch_advice(free_angle, pinch_search_stopped).c_str());
+                 "delpsc: warning: %s: at %zu vertex(es) a patch touches itself only at the vertex, not at a corner "
+                 "whose fans are wedges of %g degrees or more between two feature curves (at --angle %g); `delpsc "
+                 "mesh` refuses such a model; %s\n",
+                 o.input.c_str(), unsupported.size(), protect::kNarrowestPinchWedgeDegrees, o.angle,
+                 pinch_advice(free_angle, pinch_search_stopped).c_str());
   report("stopped", defects.stopped ? "max-seconds" : "no");
   if (defects.stopped)
     throw Failure{kCheckFailed, o.input + ": " + time_limit.stopped() +
@@ -134,7 +138,7 @@ Runner register_info(CLI::App& app) {
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
       "zero_area_triangles, t_junctions (vertices exactly on another triangle's edge with no triangle between, healed by splitting it), boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
-      "patches, pinched_vertices (where a patch touches itself only at a vertex, which mesh refuses), pinch_free_angle (with pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, none, or unknown when --max-seconds ended the search; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
+      "patches, pinched_vertices (where a patch touches itself only at a vertex; mesh keeps each fan there a disk of its own), unsupported_pinches (those at no corner, or with a fan that is no wedge of 10 degrees or more between two curves, which mesh refuses), pinch_free_angle (with unsupported pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, none, or unknown when --max-seconds ended the search; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }
 

@@ -203,7 +203,7 @@ inline void reject_self_intersections(const protect::Complex& complex, const std
 /// The feature angles pinch_free_angle tries, in degrees.
 inline constexpr std::array<double, 10> kPinchFreeAngles = {15, 30, 45, 60, 75, 90, 105, 120, 135, 150};
 
-/// When a model's complex at `options` has pinched patches: the feature angle of kPinchFreeAngles
+/// When a model's complex at `options` has pinches the mesher refuses (unsupported_pinches): the feature angle of kPinchFreeAngles
 /// nearest options.feature_angle_degrees (the larger of two as near: fewer curves) at which it
 /// has none, or nullopt. A pinch made by the curves - a patch reaching round two small patches
 /// that the angle cut out at one vertex (libcgal-demo's armadillo and femur at the default 60
@@ -227,7 +227,7 @@ inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, prot
     }
     options.feature_angle_degrees = angle;
     try {
-      if (protect::build_complex(soup, options).pinches.empty()) return angle;
+      if (protect::build_complex(soup, options).unsupported_pinches.empty()) return angle;
     } catch (const std::invalid_argument&) {
       return std::nullopt;  // the model itself is bad; the complex at the given angle said so first
     }
@@ -235,7 +235,7 @@ inline std::optional<double> pinch_free_angle(const io::TriangleSoup& soup, prot
   return std::nullopt;
 }
 
-/// What to do about pinched patches, given pinch_free_angle's answer and whether it stopped.
+/// What to do about unsupported pinches, given pinch_free_angle's answer and whether it stopped.
 inline std::string pinch_advice(std::optional<double> free_angle, bool stopped) {
   char advice[200];
   if (stopped)
@@ -248,17 +248,19 @@ inline std::string pinch_advice(std::optional<double> free_angle, bool stopped) 
   return advice;
 }
 
-/// A bad-input exit when a patch touches itself only at a vertex (protect::Complex::pinches):
-/// such a patch is no 2-manifold with boundary there, its umbrella can never be one disk (D1),
-/// and refinement would shrink the balls around the vertex until they hit the floor. Found by
-/// `delpsc mesh` in 0.2 s instead, e.g. on the holes of libcgal-demo's elephant-with-holes.off.
+/// A bad-input exit when a patch touches itself only at a vertex in a way the mesher cannot
+/// follow fan by fan (protect::Complex::unsupported_pinches: the vertex is no corner, or a fan is
+/// not a wedge of kNarrowestPinchWedgeDegrees or more between two curves there): its umbrella could never be what the disk condition asks,
+/// and refinement would shrink the balls around the vertex until they hit the floor. Pinches at
+/// corners (libcgal-demo's elephant-with-holes.off has 60) are meshed, one disk per fan.
 /// The message ends with pinch_advice: `options` are the complex's, `soup` the model it was
 /// built from (see pinch_free_angle).
 inline void reject_pinched_patches(const protect::Complex& complex, const io::TriangleSoup& soup,
                                    const protect::ComplexOptions& options, const std::string& path,
                                    const TimeLimit* limit = nullptr) {
-  if (complex.pinches.empty()) return;
-  const auto [v, patch] = complex.pinches.front();
+  const auto& pinches = complex.unsupported_pinches;
+  if (pinches.empty()) return;
+  const auto [v, patch] = pinches.front();
   const Vec3 p = in_file_frame(complex.vertices[v]);
   bool stopped = false;
   const std::optional<double> free_angle =
@@ -267,11 +269,11 @@ inline void reject_pinched_patches(const protect::Complex& complex, const io::Tr
   char message[1000];
   std::snprintf(message, sizeof message,
                 "%s: patch %u touches itself only at the vertex (%.9g, %.9g, %.9g)%s: two fans of its triangles "
-                "meet there without sharing an edge, so the patch is no surface with boundary there and the disk "
-                "condition can never hold; %s; `delpsc info` counts them",
+                "meet there without sharing an edge, and the mesher follows a pinch only at a corner whose fans are "
+                "wedges of %g degrees or more between two feature curves; %s; `delpsc info` counts them",
                 path.c_str(), patch, p.x(), p.y(), p.z(),
-                complex.pinches.size() > 1 ? (", and at " + std::to_string(complex.pinches.size() - 1) + " more").c_str() : "",
-                advice.c_str());
+                pinches.size() > 1 ? (", and at " + std::to_string(pinches.size() - 1) + " more").c_str() : "",
+                protect::kNarrowestPinchWedgeDegrees, advice.c_str());
   throw Failure{kBadInput, message};
 }
 

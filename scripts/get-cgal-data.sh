@@ -17,7 +17,8 @@ all=0
 if [ "${1:-}" = "--all" ]; then all=1; shift; fi
 models=("$@")
 if [ ${#models[@]} -eq 0 ]; then
-  models=(fandisk part anchor joint elephant cube sphere helmet triceratops boeing cheese dino hand mpi mpi_triang)
+  models=(fandisk part anchor joint elephant cube sphere helmet triceratops boeing cheese dino hand mpi mpi_triang
+          elephant-with-holes armadillo femur)
 fi
 
 missing=$all

@@ -122,6 +122,38 @@ with open(sys.argv[1], "w") as f:
 PY
 }
 
+# A flat sheet with two fans of triangles at the origin and two holes between them: fan A of two
+# triangles from 0 to 120 degrees, fan B of one from 180 degrees to 180 + $2 (a needle below 10),
+# the holes between; a ring round them (radius 1 to 2.5, zipped by angle) makes it one patch,
+# pinched at the origin - a corner where the holes' two loops meet.
+write_pinch_fans() {
+  python3 - "$1" "$2" <<'PY'
+import math, sys
+w = float(sys.argv[2])
+inner = [0, 60, 120, 180, 180 + w, 270]
+outer = list(range(0, 360, 30))
+V = [(0.0, 0.0, 0.0)]
+def add(r, a):
+    V.append((r * math.cos(math.radians(a)), r * math.sin(math.radians(a)), 0.0))
+    return len(V) - 1
+I = [add(1.0, a) for a in inner]
+O = [add(2.5, a) for a in outer]
+T = [(0, I[0], I[1]), (0, I[1], I[2]), (0, I[3], I[4])]  # two fans at vertex 0; holes between
+i = j = 0
+n, m = len(I), len(O)
+while i < n or j < m:
+    ai = inner[i + 1] if i + 1 < n else 360
+    aj = outer[j + 1] if j + 1 < m else 360
+    if j < m and (aj < ai or i == n):
+        T.append((I[i % n], O[j % m], O[(j + 1) % m])); j += 1
+    else:
+        T.append((I[i % n], O[j % m], I[(i + 1) % n])); i += 1
+with open(sys.argv[1], "w") as f:
+    f.write(f"OFF\n{len(V)} {len(T)} 0\n" + "".join("%.17g %.17g %.17g\n" % v for v in V))
+    f.write("".join("3 %d %d %d\n" % t for t in T))
+PY
+}
+
 write_cube() {
   cat >"$1" <<'MODEL'
 OFF

@@ -82,3 +82,15 @@ TEST_CASE("models the sweep refused until session 19: mpi, mpi_triang") {
     if (!soup.triangles.empty()) test::check_acceptance(name, soup, 0.04);
   }
 }
+
+// Models refused as pinched until session 42: a patch touching itself at a corner, meshed with
+// one disk per fan there (refine/disk_condition.h). elephant-with-holes has 60 such corners on
+// its holes' boundaries, armadillo and femur one and eight made by the feature curves at the
+// default angle.
+TEST_CASE("pinched patches: elephant-with-holes, armadillo, femur") {
+  for (const char* name : {"elephant-with-holes", "armadillo", "femur"}) {
+    const io::TriangleSoup soup = test::cgal_demo_model(name);
+    if (soup.triangles.empty()) continue;
+    for (const double size : {0.01, 0.005}) test::check_acceptance(name, soup, size);
+  }
+}
