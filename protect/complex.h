@@ -198,13 +198,16 @@ class Complex {
   /// it refuses the others (unsupported_pinches).
   kernel::LargeVector<std::array<std::uint32_t, 2>> pinches;
   /// For each pinch, in the same order, its patch's fans at its vertex (CSR by pinch): each the
-  /// two curves whose edges at the vertex bound the fan (an open fan, a wedge; the same curve
-  /// twice for a loop), or kNoIndex twice (a closed fan: the patch all round the vertex).
+  /// two curves whose edges at the vertex bound the fan (a wedge; the same curve twice for a
+  /// loop). (Domain::corner_pinch_fans also allows a closed fan, kNoIndex twice, which the
+  /// complex never lists: see unsupported_pinches.)
   kernel::LargeVector<std::uint32_t> pinch_fan_offsets;
   kernel::LargeVector<std::array<std::uint32_t, 2>> pinch_fans;
-  /// The pinches whose fans have no such description - the vertex is no corner, or a fan is
-  /// bounded by one or more than two curve edges there -, or with a fan narrower than
-  /// kNarrowestPinchWedgeDegrees, which the mesher refuses. Increasing.
+  /// The pinches the mesher refuses, increasing: the vertex is no corner, or a fan is not a
+  /// wedge of kNarrowestPinchWedgeDegrees or more between two curves there - bounded by one or
+  /// more than two curve edges, or by none (a closed fan: cones of the patch meeting at their
+  /// tips, whose umbrellas triangles across the tip joined at every scale in probes), or narrow.
+  /// Their pinch_fans ranges are empty.
   kernel::LargeVector<std::array<std::uint32_t, 2>> unsupported_pinches;
 
   CleanupReport cleanup;

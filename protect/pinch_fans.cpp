@@ -94,9 +94,11 @@ void describe_pinch_fans(Complex& complex) {
       const auto lo = std::lower_bound(ends.begin(), ends.end(), std::pair{local, 0u});
       std::size_t count = 0;
       for (auto it = lo; it != ends.end() && it->first == local; ++it) ++count;
-      if (count == 0) {
-        complex.pinch_fans.push_back({kNoIndex, kNoIndex});
-      } else if (count == 2 && complex.edge_curve[lo[0].second] != kNoIndex && complex.edge_curve[lo[1].second] != kNoIndex &&
+      // A closed fan (count 0) is left unsupported: cones of one patch meeting at their tips (a
+      // torus pinched to a point) had restricted triangles across the tip joining the cones'
+      // umbrellas into one at every scale, the corner ball refined to the floor on half the
+      // probes.
+      if (count == 2 && complex.edge_curve[lo[0].second] != kNoIndex && complex.edge_curve[lo[1].second] != kNoIndex &&
                  wedge_degrees(complex, v, lo[0].second, lo[1].second) >= kNarrowestPinchWedgeDegrees) {
         complex.pinch_fans.push_back({complex.edge_curve[lo[0].second], complex.edge_curve[lo[1].second]});
       } else {

@@ -317,6 +317,22 @@ TEST_CASE("a patch touching itself only at a vertex is a pinch") {
     if (k != corner) CHECK(pinched.corner_pinch_fans(k, 0).empty());
 }
 
+TEST_CASE("a torus pinched to a point: two closed fans, a pinch the mesher refuses") {
+  // Its ring at angle 0 welded into one vertex (the triangles it flattens are dropped): two cones
+  // of the one patch meet at their tips there, with no curve. Such closed fans are unsupported.
+  io::TriangleSoup s = io::make_torus(1, 0.3, 32, 16);
+  for (auto& v : s.vertices)
+    if (v.y() == 0 && v.x() > 0) v = Vec3(1, 0, 0);
+  const Complex c = build_complex(s);
+  CHECK(c.patch_count() == 1);
+  REQUIRE(c.pinches.size() == 1);
+  REQUIRE(c.unsupported_pinches.size() == 1);
+  CHECK(c.unsupported_pinches[0] == c.pinches[0]);
+  const std::uint32_t corner = c.vertex_corner[c.pinches[0][0]];
+  REQUIRE(corner != protect::kNoIndex);  // two sheets meet there (kCornerSheets)
+  CHECK(c.corner_pinch_fans(corner, 0).empty());
+}
+
 TEST_CASE("user polylines split patches or cut slits") {
   // make_square_sheet(4) numbers its grid vertices j * 5 + i.
   const io::TriangleSoup s = io::make_square_sheet(4);
