@@ -203,11 +203,12 @@ inline void reject_self_intersections(const protect::Complex& complex, const std
 /// The feature angles pinch_free_angle tries, in degrees.
 inline constexpr std::array<double, 10> kPinchFreeAngles = {15, 30, 45, 60, 75, 90, 105, 120, 135, 150};
 
-/// When a model's complex at `options` has pinches the mesher refuses (unsupported_pinches): the feature angle of kPinchFreeAngles
-/// nearest options.feature_angle_degrees (the larger of two as near: fewer curves) at which it
-/// has none, or nullopt. A pinch made by the curves - a patch reaching round two small patches
-/// that the angle cut out at one vertex (libcgal-demo's armadillo and femur at the default 60
-/// degrees) - goes at another angle; one in the geometry (a sheet touching itself) at none. One
+/// When a model's complex at `options` has pinches the mesher refuses (unsupported_pinches):
+/// the feature angle of kPinchFreeAngles nearest options.feature_angle_degrees (the larger of
+/// two as near: fewer curves) at which it has none, or nullopt. A pinch whose fans the curves
+/// of another angle turn into wedges goes there (a torus of six sides pinched to a point, two
+/// cones of one patch at 60 degrees, has its sides' edges as curves at 45, each fan a wedge
+/// between two); one in the geometry (a needle fan between two holes) at none. One
 /// build_complex per angle tried (a few ms on a model of 10^4 triangles), only on the way to a
 /// refusal; `stop` (--max-seconds) is asked before each, and when it ends the search *stopped
 /// (if given) is set: nullopt then means "not found in time", not "none".
@@ -241,18 +242,19 @@ inline std::string pinch_advice(std::optional<double> free_angle, bool stopped) 
   if (stopped)
     std::snprintf(advice, sizeof advice, "--max-seconds ended the search for a feature angle without them");
   else if (free_angle)
-    std::snprintf(advice, sizeof advice, "at --angle %g the feature curves divide the model without a pinch", *free_angle);
+    std::snprintf(advice, sizeof advice, "at --angle %g the feature curves divide the model without such a pinch", *free_angle);
   else
     std::snprintf(advice, sizeof advice, "no --angle from %g to %g degrees removes them: separate the sheets or divide the patch there",
                   kPinchFreeAngles.front(), kPinchFreeAngles.back());
   return advice;
 }
 
-/// A bad-input exit when a patch touches itself only at a vertex in a way the mesher cannot
+/// A bad-input exit when a patch touches itself only at a vertex in a way the mesher does not
 /// follow fan by fan (protect::Complex::unsupported_pinches: the vertex is no corner, or a fan is
-/// not a wedge of kNarrowestPinchWedgeDegrees or more between two curves there): its umbrella could never be what the disk condition asks,
-/// and refinement would shrink the balls around the vertex until they hit the floor. Pinches at
-/// corners (libcgal-demo's elephant-with-holes.off has 60) are meshed, one disk per fan.
+/// not a wedge of kNarrowestPinchWedgeDegrees or more between two curves there): refinement
+/// there shrank the balls around the vertex to the floor, or ran for minutes at a needle fan.
+/// Pinches at corners between wedges (libcgal-demo's elephant-with-holes.off has 60) are
+/// meshed, one disk per fan.
 /// The message ends with pinch_advice: `options` are the complex's, `soup` the model it was
 /// built from (see pinch_free_angle).
 inline void reject_pinched_patches(const protect::Complex& complex, const io::TriangleSoup& soup,

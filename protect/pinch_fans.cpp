@@ -72,7 +72,10 @@ void describe_pinch_fans(Complex& complex) {
     UnionFind fans(end - first);
     for (std::size_t s = 1; s < sides.size(); ++s)
       if (sides[s].first == sides[s - 1].first) fans.unite(sides[s].second, sides[s - 1].second);
-    // A fan's boundary at v: its edges at v in exactly one of its triangles.
+    // A fan's boundary at v: its edges at v in exactly one of its triangles. An edge in more
+    // than two of them (a non-manifold edge inside the fan) makes the fan no wedge: its umbrella
+    // could never be one path, and the pinch is unsupported.
+    bool manifold_fans = true;
     ends.clear();
     for (std::size_t s = 0; s < sides.size();) {
       std::size_t r = s;
@@ -83,11 +86,12 @@ void describe_pinch_fans(Complex& complex) {
       for (std::size_t q = 0; q < roots.size(); ++q) {
         const bool alone = (q == 0 || roots[q - 1] != roots[q]) && (q + 1 == roots.size() || roots[q + 1] != roots[q]);
         if (alone) ends.emplace_back(roots[q], sides[s].first);
+        manifold_fans &= q < 2 || roots[q - 2] != roots[q];
       }
       s = r;
     }
     std::sort(ends.begin(), ends.end());
-    bool supported = complex.vertex_corner[v] != kNoIndex;
+    bool supported = complex.vertex_corner[v] != kNoIndex && manifold_fans;
     const std::size_t fans_first = complex.pinch_fans.size();
     for (std::uint32_t local = 0; local < end - first; ++local) {
       if (fans.find(local) != local) continue;

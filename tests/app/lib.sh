@@ -154,6 +154,37 @@ with open(sys.argv[1], "w") as f:
 PY
 }
 
+# write_pinched_torus FILE: a torus of six sides and 16 segments whose tube shrinks to a point
+# at (1, 0, 0) (radius 0.5 |sin(u/2)|): one patch, two cones meeting at their tips - closed fans,
+# a pinch mesh refuses at --angle 60; at 45 the sides' edges are curves and each fan a wedge.
+write_pinched_torus() {
+  python3 - "$1" <<'PY'
+import math, sys
+nu, nv, R, r0 = 16, 6, 1.0, 0.5
+V = [(R, 0.0, 0.0)]
+rings = []
+for i in range(1, nu):
+    u = 2 * math.pi * i / nu
+    r = r0 * abs(math.sin(u / 2))
+    rings.append([])
+    for j in range(nv):
+        v = 2 * math.pi * j / nv
+        V.append(((R + r * math.cos(v)) * math.cos(u), (R + r * math.cos(v)) * math.sin(u), r * math.sin(v)))
+        rings[-1].append(len(V) - 1)
+T = []
+for j in range(nv):
+    k = (j + 1) % nv
+    T += [(0, rings[0][k], rings[0][j]), (0, rings[-1][j], rings[-1][k])]
+for a, b in zip(rings, rings[1:]):
+    for j in range(nv):
+        k = (j + 1) % nv
+        T += [(a[j], a[k], b[k]), (a[j], b[k], b[j])]
+with open(sys.argv[1], "w") as f:
+    f.write(f"OFF\n{len(V)} {len(T)} 0\n" + "".join("%.17g %.17g %.17g\n" % v for v in V))
+    f.write("".join("3 %d %d %d\n" % t for t in T))
+PY
+}
+
 write_cube() {
   cat >"$1" <<'MODEL'
 OFF

@@ -292,6 +292,16 @@ expect 0 "wedges of 10 degrees or more" -- info "$TMP/needle.off"
 expect 0 "--max-seconds ended the search" -- info "$TMP/needle.off" --max-seconds 1e-9
 [[ "$(value pinch_free_angle)" == "unknown" ]] || fail "needle fan, limit passed: pinch_free_angle=$(value pinch_free_angle)"
 expect 2 "--max-seconds ended the search for a feature angle" -- mesh "$TMP/needle.off" -o "$TMP/x.off" --max-seconds 1e-9
+# Closed fans (two cones of one patch meeting at their tips) are refused; the refusal names the
+# angle whose curves make each fan a wedge, and the torus meshes there.
+write_pinched_torus "$TMP/pinched_torus.off"
+expect 2 "at --angle 45 the feature curves divide the model without such a pinch" -- mesh "$TMP/pinched_torus.off" -o "$TMP/x.off"
+expect 0 "at --angle 45 the feature curves divide the model without such a pinch" -- info "$TMP/pinched_torus.off"
+[[ "$(value unsupported_pinches)" == "1" && "$(value pinch_free_angle)" == "45" ]] \
+  || fail "pinched torus: unsupported_pinches=$(value unsupported_pinches) pinch_free_angle=$(value pinch_free_angle)"
+expect 0 "" -- mesh "$TMP/pinched_torus.off" -o "$TMP/pinched_torus.mesh.off" --angle 45 --size 4% --check
+[[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" ]] \
+  || fail "pinched torus at 45: g1=$(value g1) topology_ok=$(value topology_ok)"
 # A size the job could never finish at is refused at once, not after minutes at a cap.
 expect 2 "is too small for this model" -- mesh "$TMP/cube.off" --size 0.001% -o "$TMP/x.off"
 expect 2 "is below 1/10000 of --size" -- mesh "$TMP/cube.off" --size 10% --facet-distance 1e-12 -o "$TMP/x.off"
