@@ -58,6 +58,7 @@ void describe_pinch_fans(Complex& complex) {
   std::sort(members.begin(), members.end());
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sides;  // (edge at the vertex, local triangle)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;   // (fan root, boundary edge)
+  std::vector<std::uint32_t> roots;                             // the fans along one edge
   for (std::size_t i = 0, first = 0; i < complex.pinches.size(); ++i) {
     std::size_t end = first;
     while (end < members.size() && members[end].first == i) ++end;
@@ -80,7 +81,7 @@ void describe_pinch_fans(Complex& complex) {
     for (std::size_t s = 0; s < sides.size();) {
       std::size_t r = s;
       while (r < sides.size() && sides[r].first == sides[s].first) ++r;
-      std::vector<std::uint32_t> roots;
+      roots.clear();
       for (std::size_t q = s; q < r; ++q) roots.push_back(fans.find(sides[q].second));
       std::sort(roots.begin(), roots.end());
       for (std::size_t q = 0; q < roots.size(); ++q) {
@@ -103,7 +104,7 @@ void describe_pinch_fans(Complex& complex) {
       // umbrellas into one at every scale, the corner ball refined to the floor on half the
       // probes.
       if (count == 2 && complex.edge_curve[lo[0].second] != kNoIndex && complex.edge_curve[lo[1].second] != kNoIndex &&
-                 wedge_degrees(complex, v, lo[0].second, lo[1].second) >= kNarrowestPinchWedgeDegrees) {
+          wedge_degrees(complex, v, lo[0].second, lo[1].second) >= kNarrowestPinchWedgeDegrees) {
         complex.pinch_fans.push_back({complex.edge_curve[lo[0].second], complex.edge_curve[lo[1].second]});
       } else {
         supported = false;
