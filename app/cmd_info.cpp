@@ -53,6 +53,8 @@ int run(const InfoOptions& o, const GlobalOptions& g) {
   report("unused_vertices", model.report.unused_vertices);  // dropped, with a warning (load_model)
   report("zero_area_triangles", model.report.degenerate_triangles.size());
   report("t_junctions", complex.cleanup.t_junctions);  // healed (complex.h)
+  report("near_t_junctions", complex.cleanup.near_t_junctions);
+  report("t_junction_gap", complex.cleanup.t_junction_gap);
   report("boundary_edges", boundary);
   report("non_manifold_edges", non_manifold);
   report("bbox", box);
@@ -137,7 +139,7 @@ Runner register_info(CLI::App& app) {
   app.footer(
       "Prints key=value lines: format, vertices (those some triangle uses), triangles, merged_vertices, "
       "unused_vertices (used by no triangle: dropped), "
-      "zero_area_triangles, t_junctions (vertices exactly on another triangle's edge with no triangle between, healed by splitting it), boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
+      "zero_area_triangles, t_junctions (edges with vertices of the other side of a crack on them - exactly, or off by rounding: with the edge's ends an angle within 1e-3 rad of 180 degrees - and no triangle between, healed by splitting the edge's triangle at them), near_t_junctions (those with vertices off the edge), t_junction_gap (the largest distance of such a vertex from its edge: how far healing moves the surface), boundary_edges, non_manifold_edges, bbox, diagonal, corners, curves, "
       "patches, pinched_vertices (where a patch touches itself only at a vertex; mesh keeps each fan there a disk of its own), unsupported_pinches (those at no corner, or with a fan that is no wedge of 10 degrees or more between two curves, which mesh refuses), pinch_free_angle (with unsupported pinches, the feature angle of 15, 30, ..., 150 nearest --angle at which there are none, none, or unknown when --max-seconds ended the search; - without), duplicate_triangles (triangles that repeat another's three vertices, which mesh refuses), self_intersections (pairs of triangles that cross or overlap other than along a shared edge or vertex, at most 100 counted), sharpest_fold_degrees (the smallest angle between the two triangles of an edge: 180 flat, 0 folded shut; below 15 a warning says where), warnings, stopped (no, or max-seconds when --max-seconds ended the check for self-intersections: exit code 1).\n\nExample:\n  delpsc info part.stl");
   return [o](const GlobalOptions& g) { return run(*o, g); };
 }

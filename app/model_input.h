@@ -70,6 +70,8 @@ inline protect::ComplexOptions complex_options(double feature_angle, double corn
   protect::ComplexOptions options;
   options.feature_angle_degrees = feature_angle;
   options.corner_angle_degrees = corner_angle;
+  const Vec3 offset = model_offset();  // set by load_model
+  options.file_offset = {offset.x(), offset.y(), offset.z()};
   return options;
 }
 
@@ -82,11 +84,16 @@ inline protect::Complex load_complex(const io::ReadResult& model, const std::str
   } catch (const std::invalid_argument& e) {
     throw Failure{kBadInput, path + ": " + e.what()};
   }
-  if (!g.quiet && complex.cleanup.t_junctions > 0)
+  if (!g.quiet && complex.cleanup.t_junctions > 0) {
     std::fprintf(stderr,
-                 "delpsc: warning: %s: %zu T-junction(s) healed: vertices lying exactly on another triangle's edge, "
-                 "with no triangle between; that triangle is split at them (the surface is unchanged)\n",
+                 "delpsc: warning: %s: %zu T-junction(s) healed: vertices lying on another triangle's edge, "
+                 "with no triangle between; that triangle is split at them (the surface is unchanged",
                  path.c_str(), complex.cleanup.t_junctions);
+    if (complex.cleanup.near_t_junctions > 0)
+      std::fprintf(stderr, " but at %zu of them, whose vertices the file rounded off the edge: there it moves by up to %g",
+                   complex.cleanup.near_t_junctions, complex.cleanup.t_junction_gap);
+    std::fprintf(stderr, ")\n");
+  }
   if (!g.quiet && !complex.cleanup.flat_caps.empty())
     std::fprintf(stderr,
                  "delpsc: warning: %s: %zu nearly flat triangle(s) (an angle within 1e-4 rad of 180 degrees; the "

@@ -13,8 +13,10 @@
 //     leaving a corner at an angle no ball size can separate.
 //  2. edge_table.cpp: unique undirected edges, their incident triangles, each triangle's edges.
 //     t_junctions.cpp then heals T-junctions without a cap - a boundary edge with boundary edges
-//     running along it through vertices exactly on it - by splitting its triangle into a fan at
-//     those vertices (the same surface, now glued there), and the table is made again.
+//     running along it through vertices on it - by splitting its triangle into a fan at those
+//     vertices (the same surface, now glued there), and the table is made again. "On it" is
+//     exact, or off it by rounding (an angle within kCrackRadians = 1e-3 of 180° with its ends;
+//     the surface moves by that distance), also when both sides have vertices on the other's.
 //  3. feature_edges.cpp: an edge is a feature when it is a boundary edge (1 triangle), a
 //     non-manifold edge (3 or more), a manifold edge whose two triangle normals make an angle
 //     above the feature angle (consistently oriented first, so a badly oriented soup does not
@@ -72,6 +74,10 @@ struct ComplexOptions {
   /// Extra feature polylines as chains of soup vertex indices; each consecutive pair must be an
   /// edge of the mesh (std::invalid_argument otherwise). A closed chain repeats its first index.
   std::vector<std::vector<std::uint32_t>> feature_polylines;
+  /// What the caller subtracted from the file's coordinates to bring the model near the origin
+  /// (io::move_near_origin; zero if nothing): crack healing judges rounding against the
+  /// coordinates as the file wrote them (t_junctions.cpp).
+  std::array<double, 3> file_offset{0, 0, 0};  // plain doubles: the options stay a literal type
 };
 
 /// Why an edge is a feature (bit flags; 0 = not a feature).
@@ -133,10 +139,14 @@ struct CleanupReport {
   /// T-junction of k vertices (t_junctions)
   std::size_t split_triangles = 0;
   std::size_t dropped_caps = 0;  ///< caps that could not be flipped (long edge not shared by exactly one other triangle)
-  /// Boundary edges with vertices exactly on them and no cap between (T-junctions): each one's
+  /// Boundary edges with vertices on them and no cap between (T-junctions): each one's
   /// triangle split into a fan at those vertices, gluing it to the triangles along it
-  /// (t_junctions.cpp). The surface is unchanged.
+  /// (t_junctions.cpp). The surface is unchanged where they lie exactly on the edge.
   std::size_t t_junctions = 0;
+  /// Of those, the ones with vertices off the edge by rounding (at an angle within 1e-3 of 180°
+  /// with its ends); the fan moves the surface by up to t_junction_gap there.
+  std::size_t near_t_junctions = 0;
+  double t_junction_gap = 0;  ///< the largest distance of such a vertex from its edge (model units)
   /// soup indices, increasing: triangles whose largest angle is within 1e-4 radians of 180°,
   /// healed as caps (kept as they are where their long edge is not shared by exactly one other
   /// triangle)

@@ -2,6 +2,7 @@
 // on a Complex being filled. Each step documents what it reads and what it writes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,9 +18,43 @@ kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup,
 /// (edge_table.cpp)
 void build_edge_table(Complex& complex);
 
+/// A triangle whose largest angle is within this many radians (0.0057°) of 180° is a "flat cap":
+/// a numerical accident, not a shape (triangle_cleanup.cpp says where the value comes from).
+inline constexpr double kFlatCapRadians = 1e-4;
+
+/// The vertex (0, 1, 2) opposite the longest edge when p is a flat cap (its two angles at the
+/// ends of the longest edge, height / distance to each end, summing below kFlatCapRadians), else
+/// -1. That vertex projects strictly inside the longest edge (the other two angles are acute).
+/// (triangle_cleanup.cpp)
+int flat_cap_middle(const std::array<Vec3, 3>& p);
+
+/// A vertex of one side of a crack counts as on an edge of the other when their flatness is
+/// below this (0.057°): ten times the flat caps' tolerance, since a crack's evidence is a whole
+/// walk - both sides leave one vertex and meet again, each side's vertices on the other's edges
+/// in order. Six significant digits move a vertex by up to 5e-6 of its coordinates' decade,
+/// which over a piece of edge 1% of that long is an angle of 5e-4 (t_junctions.cpp).
+inline constexpr double kCrackRadians = 1e-3;
+
+/// A vertex also counts as on an edge of the other side when its distance from the edge is
+/// below this times the largest coordinate of the three (as the file wrote them), at a flatness
+/// below kCrackMostRadians: the error of six significant digits (5e-6 of the coordinates'
+/// decade) on each of the three points, whatever the edge's length. A model of a few mm at
+/// 100 mm from the origin, written with six digits, has its vertices 1e-4 off; only a file that
+/// lost that much precision has cracks this wide (t_junctions.cpp).
+inline constexpr double kCrackOfCoordinates = 2e-5;
+inline constexpr double kCrackMostRadians = 0.1;
+
+/// How far m is from lying on the segment from a to b, as the sum of the triangle's two angles
+/// at a and b (small-angle approximation: m's distance from the line over its distance from
+/// each end). 0 on the line; below kFlatCapRadians a flat cap when m projects inside. a != b and
+/// m distinct from both. (triangle_cleanup.cpp)
+double flatness(const Vec3& a, const Vec3& m, const Vec3& b);
+
 /// Reads triangles and the edge table; splits each triangle whose boundary edge has other
-/// boundary edges running along it through vertices exactly on it (a T-junction) into a fan at
-/// those vertices, appending to triangles and triangle_source and rebuilding the edge table.
+/// boundary edges running along it through vertices on it (a T-junction) into a fan at those
+/// vertices, appending to triangles and triangle_source, counting in cleanup and rebuilding the
+/// edge table. A vertex counts as on the edge when exactly on it, or near enough (flatness below
+/// kCrackRadians: a crack left by rounding, cleanup.near_t_junctions).
 /// Returns how many edges were healed. (t_junctions.cpp)
 std::size_t heal_t_junctions(Complex& complex);
 

@@ -82,8 +82,10 @@ struct Cap {
   bool flat = false;         // not exactly collinear: kept as it is if it cannot be healed
 };
 
-// A triangle whose largest angle is within this many radians (0.0057°) of 180° is healed like
-// an exactly collinear cap: a numerical accident, not a shape. libcgal-demo's mpi_triang.off has
+}  // namespace
+
+// kFlatCapRadians (0.0057°): a triangle whose largest angle is this near 180° is healed like an
+// exactly collinear cap, a numerical accident, not a shape. libcgal-demo's mpi_triang.off has
 // one (its two small angles 2.6e-6 and 1.9e-6, its height 2e-5 over an edge of 14; the next
 // flattest triangles' small angles are ~1e-3), and mpi.off's 8-gon, nearly flat with four corners
 // nearly in line, has one in every split (small angles 1.2e-5 and 2.6e-6): their two long edges
@@ -91,11 +93,6 @@ struct Cap {
 // have to separate. Splitting the triangle across its long edge moves the surface by its height.
 // (A needle - one short edge, one tiny angle - is not a cap: flipping its long edge would only
 // move the needle.)
-constexpr double kFlatCapRadians = 1e-4;
-
-// The vertex (0, 1, 2) opposite the longest edge when the triangle is a flat cap (its two angles
-// at the ends of the longest edge, height / distance to each end, summing below kFlatCapRadians),
-// else -1. That vertex projects strictly inside the longest edge (the other two angles are acute).
 int flat_cap_middle(const std::array<Vec3, 3>& p) {
   int longest = 0;
   double longest2 = -1;
@@ -106,12 +103,13 @@ int flat_cap_middle(const std::array<Vec3, 3>& p) {
       longest = k;
     }
   }
-  const double height = (p[1] - p[0]).cross(p[2] - p[0]).norm() / std::sqrt(longest2);
-  const double to_a = (p[(longest + 1) % 3] - p[longest]).norm(), to_b = (p[(longest + 2) % 3] - p[longest]).norm();
-  return height / to_a + height / to_b < kFlatCapRadians ? longest : -1;
+  return flatness(p[(longest + 1) % 3], p[longest], p[(longest + 2) % 3]) < kFlatCapRadians ? longest : -1;
 }
 
-}  // namespace
+double flatness(const Vec3& a, const Vec3& m, const Vec3& b) {
+  const double height = (m - a).cross(b - a).norm() / (b - a).norm();
+  return height / (m - a).norm() + height / (m - b).norm();
+}
 
 kernel::LargeVector<std::uint32_t> clean_triangles(const io::TriangleSoup& soup, Complex& complex) {
   const auto vertex_count = soup.vertices.size();

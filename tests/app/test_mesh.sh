@@ -224,15 +224,26 @@ expect 2 "intersects itself: triangles 0 and 1" -- mesh "$TMP/crossing.off" -o "
 # corner is refused at that corner, not at the other's centroid (1/3, 1/3, 0).
 printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0.25 0.25 0\n1 1 1\n0 1 1\n3 0 1 2\n3 3 4 5\n' >"$TMP/touch.off"
 expect 2 "cross or overlap near (0.25, 0.25, 0)" -- mesh "$TMP/touch.off" -o "$TMP/x.off"
+# A healed crack: NAME meshes as the one square it is, with the warning WARNING, and info counts
+# one T-junction, NEAR of them off the edge, and a gap below MAX_GAP.
+check_healed_crack() {
+  local name=$1 warning=$2 near=$3 max_gap=$4
+  expect 0 "$warning" -- mesh "$TMP/$name.off" -o "$TMP/$name.mesh.off" --size 5% --check
+  [[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" && "$(value patches)" == "1" && "$(value curves)" == "4" ]] \
+    || fail "$name: g1=$(value g1) topology_ok=$(value topology_ok) patches=$(value patches) curves=$(value curves)"
+  expect 0 "" -- info "$TMP/$name.off"
+  [[ "$(value t_junctions)" == "1" && "$(value near_t_junctions)" == "$near" && "$(value boundary_edges)" == "4" &&
+     "$(value self_intersections)" == "0" ]] && awk -v g="$(value t_junction_gap)" -v m="$max_gap" 'BEGIN { exit !(g <= m) }' \
+    || fail "$name: t_junctions=$(value t_junctions) near=$(value near_t_junctions) gap=$(value t_junction_gap) boundary_edges=$(value boundary_edges) self_intersections=$(value self_intersections)"
+}
 # A T-junction (vertex 4 on triangle 0's edge from 0 to 2, no cap between; a crack of zero
 # width, refused as touching before) is healed with a warning and meshes as the square it is.
 printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n3 0 1 2\n3 0 4 3\n3 4 2 3\n' >"$TMP/t_junction.off"
-expect 0 "1 T-junction(s) healed" -- mesh "$TMP/t_junction.off" -o "$TMP/t_junction.mesh.off" --size 5% --check
-[[ "$(value g1)" == "true" && "$(value topology_ok)" == "true" && "$(value patches)" == "1" && "$(value curves)" == "4" ]] \
-  || fail "T-junction: g1=$(value g1) topology_ok=$(value topology_ok) patches=$(value patches) curves=$(value curves)"
-expect 0 "" -- info "$TMP/t_junction.off"
-[[ "$(value t_junctions)" == "1" && "$(value boundary_edges)" == "4" && "$(value self_intersections)" == "0" ]] \
-  || fail "T-junction: t_junctions=$(value t_junctions) boundary_edges=$(value boundary_edges) self_intersections=$(value self_intersections)"
+check_healed_crack t_junction "1 T-junction(s) healed" 0 0
+# The same crack on a slanted edge, its two vertices written with six digits: off the edge by
+# ~1e-7, which was refused as touching; healed within the rounding tolerance.
+printf 'OFF\n6 4 0\n0 0 0\n1 0 0\n1 0.7 0\n0 0.7 0\n0.333333 0.233333 0\n0.666667 0.466667 0\n3 0 1 2\n3 0 4 3\n3 4 5 3\n3 5 2 3\n' >"$TMP/near_t_junction.off"
+check_healed_crack near_t_junction "rounded off the edge: there it moves by up to" 1 1e-6
 # A cube with its triangle 3 listed again (reversed) at the end: refused as a repeat, named.
 { sed -n '1,2p' "$TMP/cube.off" | sed '2s/^8 12/8 13/'; sed -n '3,$p' "$TMP/cube.off"; sed -n '14p' "$TMP/cube.off" | awk '{print $1, $4, $3, $2}'; } >"$TMP/repeat.off"
 expect 2 "lists a triangle more than once: triangles 3 and 12" -- mesh "$TMP/repeat.off" -o "$TMP/x.off"

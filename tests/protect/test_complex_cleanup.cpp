@@ -230,14 +230,77 @@ TEST_CASE("T-junctions without a cap are healed: the complex of the mesh without
   }
 }
 
-TEST_CASE("a vertex near an edge but off it is no T-junction") {
+void check_faces_up(const Complex& c) {  // the sheet's orientation (+z) kept by the fans
+  for (const auto& t : c.triangles) {
+    const Vec3 n = (c.vertices[t[1]] - c.vertices[t[0]]).cross(c.vertices[t[2]] - c.vertices[t[0]]);
+    CHECK(n.z() > 0);
+  }
+}
+
+TEST_CASE("a vertex off an edge by rounding is a T-junction; one farther off is none") {
   io::TriangleSoup s = io::make_square_sheet(4);
+  const Complex before = build_complex(s);
   const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
   REQUIRE(e);
   const std::uint32_t mid = split_without_cap(s, *e, {0.5}).front();
-  s.vertices[mid].y() += 0x1p-40;  // just off the line, into t1: the crack stays, and overlaps
-  const Complex after = build_complex(s);
-  CHECK(after.cleanup.t_junctions == 0);
+  SUBCASE("2^-40 off (into t1): healed, the surface moved by that much") {
+    s.vertices[mid].y() += 0x1p-40;
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.t_junctions == 1);
+    CHECK(after.cleanup.near_t_junctions == 1);
+    CHECK(after.cleanup.t_junction_gap == doctest::Approx(0x1p-40).epsilon(1e-6));
+    check_faces_up(after);
+  }
+  SUBCASE("1e-3 off, an angle of 0.9 degrees at the vertex: a crack left as it is") {
+    s.vertices[mid].y() += 1e-3;
+    const Complex after = build_complex(s);
+    CHECK(after.cleanup.t_junctions == 0);
+    CHECK(after.cleanup.t_junction_gap == 0);
+    SUBCASE("unless the file had the model 1000 away, where six digits round off 1e-3") {
+      protect::ComplexOptions options;
+      options.file_offset = {1000, 0, 0};
+      const Complex far = build_complex(s, options);
+      check_same_complex(far, before);
+      CHECK(far.cleanup.near_t_junctions == 1);
+      CHECK(far.cleanup.t_junction_gap == doctest::Approx(1e-3));
+    }
+  }
+}
+
+TEST_CASE("a crack split at different points on its two sides is zipped") {
+  io::TriangleSoup s = io::make_square_sheet(4);
+  const Complex before = build_complex(s);
+  const auto e = find_shared_edge(s, [](const Vec3& a, const Vec3& b) { return a.y() == 0.5 && b.y() == 0.5; });
+  REQUIRE(e);
+  // t2 split at the middle, t1 at the quarters: each side's vertices lie on the other's edges.
+  const std::uint32_t mid = split_without_cap(s, *e, {0.5}).front();
+  const std::vector<std::uint32_t> quarters = split_without_cap(s, Shared{e->t2, e->t1, e->b, e->a}, {0.25, 0.75});
+  SUBCASE("exactly on the line") {
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.t_junctions == 3);  // the middle on t1's, each quarter on one of t2's
+    CHECK(after.cleanup.near_t_junctions == 0);
+    CHECK(after.cleanup.split_triangles == 3);
+    check_faces_up(after);
+  }
+  SUBCASE("each off it by rounding, to either side") {
+    s.vertices[mid].y() -= 0x1p-44;
+    s.vertices[quarters[0]].y() += 0x1p-45;
+    s.vertices[quarters[1]].y() -= 0x1p-43;
+    const Complex after = build_complex(s);
+    check_same_complex(after, before);
+    CHECK(after.cleanup.t_junctions == 3);
+    CHECK(after.cleanup.near_t_junctions == 3);
+    CHECK(after.cleanup.t_junction_gap == doctest::Approx(0x1p-43 + 0x1p-45).epsilon(0.3));
+    check_faces_up(after);
+  }
+  SUBCASE("one vertex of the crack far off the line: nothing is zipped") {
+    s.vertices[quarters[1]].y() += 1e-3;
+    const Complex after = build_complex(s);
+    CHECK(after.cleanup.t_junctions == 0);
+    CHECK(after.cleanup.split_triangles == 0);
+  }
 }
 
 TEST_CASE("triangles with a repeated vertex, and repeated vertices, change nothing") {
