@@ -120,6 +120,13 @@ class CrackZipper {
   }
   const Vec3& at(std::uint32_t v) const { return c_.vertices[v]; }
   std::uint32_t triangle_of(std::uint32_t e) const { return c_.edge_triangles[c_.edge_triangle_offsets[e]]; }
+  // The vertex of e's triangle opposite e (triangle edge k is opposite vertex k).
+  std::uint32_t opposite(std::uint32_t e) const {
+    const std::uint32_t t = triangle_of(e);
+    int k = 0;
+    while (c_.triangle_edges[t][k] != e) ++k;
+    return c_.triangles[t][k];
+  }
 
   // Whether x's walk end lies on y's last edge, beyond what was already put on it.
   bool lies_on_last(const CrackSide& x, const CrackSide& y, std::uint32_t after) const {
@@ -188,6 +195,15 @@ class CrackZipper {
     if (groups != triangles.size()) return 0;
     for (const std::uint32_t t : triangles)
       if (split_[t]) return 0;
+    // Nothing may span the gap: a triangle to split whose opposite vertex lies on the other side
+    // (a thin strip of triangles between the two paths, or one nearly flat triangle whose two
+    // edges leave p together) is no crack - its fan would repeat that vertex or overlap the strip.
+    for (const Insertion& i : inserted_) {
+      const CrackSide& other = sides[1 - i.side];
+      const std::uint32_t x = opposite(sides[i.side].edges[i.edge]);
+      if (x == other.end || std::find(other.entered_at.begin(), other.entered_at.end(), x) != other.entered_at.end())
+        return 0;
+    }
     for (const CrackSide& side : sides_)
       for (const std::uint32_t e : side.edges) used_[e] = 1;
     // The insertions come in walk order, so those on one edge are consecutive and ordered.
