@@ -10,9 +10,8 @@
 // edge written as float32 STL or with six digits), they count as on it when the angle they make
 // with the edge's ends is within kCrackRadians of 180°, or their distance from it is within what
 // six digits of the file's coordinates could have rounded away (kCrackOfCoordinates), and the
-// fan moves the surface by that distance. Left as they
-// were, such cracks were refused as touching or ran towards the balls' cap (BENCHMARKS.md,
-// session 43).
+// fan moves the surface by that distance. Left as they were, such cracks were refused as
+// touching or ran towards the balls' cap (BENCHMARKS.md, session 43).
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -31,34 +30,27 @@ double distance_from_line(const Vec3& p, const Vec3& q, const Vec3& n) {
   return (n - p).cross(q - p).norm() / (q - p).norm();
 }
 
-// How n lies against the segment from p to q, from `from` to `to` (both on it or near it, in that
-// order from p).
-enum class OnEdge { no, exactly, near };
-
 // Whether n lies strictly between `from` and `to` along the segment from p to q, exactly on its
 // line or near it. Exact when collinear: order along the axis where p and q differ most
 // (collinear distinct points differ there). Near: ordered by the projection on p -> q (rounded;
 // a misordered fan would cross itself, which the commands' input check refuses), and (p, n, q)
 // flatter than kCrackRadians, or n nearer the line than the file's rounding (kCrackOfCoordinates).
-OnEdge between(const Vec3& p, const Vec3& q, const Vec3& from, const Vec3& to, const Vec3& n, const Vec3& file_offset) {
+bool between(const Vec3& p, const Vec3& q, const Vec3& from, const Vec3& to, const Vec3& n, const Vec3& file_offset) {
   if (kernel::collinear(p.data(), q.data(), n.data())) {
     int axis = 0;
     for (int i = 1; i < 3; ++i)
       if (std::abs(q[i] - p[i]) > std::abs(q[axis] - p[axis])) axis = i;
-    const bool inside = q[axis] > p[axis] ? from[axis] < n[axis] && n[axis] < to[axis]
-                                          : to[axis] < n[axis] && n[axis] < from[axis];
-    return inside ? OnEdge::exactly : OnEdge::no;
+    return q[axis] > p[axis] ? from[axis] < n[axis] && n[axis] < to[axis] : to[axis] < n[axis] && n[axis] < from[axis];
   }
   const Vec3 d = q - p;
   const double s = (n - p).dot(d);
-  if (!((from - p).dot(d) < s && s < (to - p).dot(d))) return OnEdge::no;
+  if (!((from - p).dot(d) < s && s < (to - p).dot(d))) return false;
   const double flat = flatness(p, n, q);
-  if (flat < kCrackRadians) return OnEdge::near;
+  if (flat < kCrackRadians) return true;
   const double coordinates =
       std::max({(p + file_offset).cwiseAbs().maxCoeff(), (q + file_offset).cwiseAbs().maxCoeff(),
                 (n + file_offset).cwiseAbs().maxCoeff()});
-  return flat < kCrackMostRadians && distance_from_line(p, q, n) <= kCrackOfCoordinates * coordinates ? OnEdge::near
-                                                                                                     : OnEdge::no;
+  return flat < kCrackMostRadians && distance_from_line(p, q, n) <= kCrackOfCoordinates * coordinates;
 }
 
 // One side of a crack as it is walked from the vertex where both sides start: its boundary edges
@@ -120,17 +112,19 @@ class CrackZipper {
   }
   const Vec3& at(std::uint32_t v) const { return c_.vertices[v]; }
   std::uint32_t triangle_of(std::uint32_t e) const { return c_.edge_triangles[c_.edge_triangle_offsets[e]]; }
-  // The vertex of e's triangle opposite e (triangle edge k is opposite vertex k).
-  std::uint32_t opposite(std::uint32_t e) const {
+  // Which of its triangle's edges e is (triangle edge k is opposite vertex k).
+  int index_in_triangle(std::uint32_t e) const {
     const std::uint32_t t = triangle_of(e);
     int k = 0;
     while (c_.triangle_edges[t][k] != e) ++k;
-    return c_.triangles[t][k];
+    return k;
   }
+  // The vertex of e's triangle opposite e.
+  std::uint32_t opposite(std::uint32_t e) const { return c_.triangles[triangle_of(e)][index_in_triangle(e)]; }
 
   // Whether x's walk end lies on y's last edge, beyond what was already put on it.
   bool lies_on_last(const CrackSide& x, const CrackSide& y, std::uint32_t after) const {
-    return between(at(y.prev), at(y.end), at(after), at(y.end), at(x.end), file_offset_) != OnEdge::no;
+    return between(at(y.prev), at(y.end), at(after), at(y.end), at(x.end), file_offset_);
   }
 
   // The boundary edge leaving v other than `from`: kNoIndex unless there is exactly one, unused.
@@ -223,8 +217,7 @@ class CrackZipper {
   // triangle's orientation.
   void split_edge(std::uint32_t e, std::uint32_t from, std::size_t i, std::size_t j) {
     const std::uint32_t t = triangle_of(e);
-    int k = 0;
-    while (c_.triangle_edges[t][k] != e) ++k;
+    const int k = index_in_triangle(e);
     const auto tri = c_.triangles[t];
     const std::uint32_t x = tri[k], p = tri[(k + 1) % 3], q = tri[(k + 2) % 3];
     chain_.clear();
